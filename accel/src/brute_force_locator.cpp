@@ -1,0 +1,45 @@
+#include "dymesh/accel/brute_force_locator.h"
+
+#include <cmath>
+
+#include "dymesh/core/geometry.h"
+
+namespace dymesh {
+
+BruteForceLocator::BruteForceLocator(const TriMesh& mesh) : triangles_(mesh.triangles), vertices_(mesh.vertices) {}
+
+void BruteForceLocator::Update(const std::vector<Vec3>& vertices) { vertices_ = vertices; }
+
+void BruteForceLocator::TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, double length,
+                                              std::vector<int>* out) const {
+  // every triangle whose plane the segment crosses inside the triangle, in double precision
+  const double slack = 1e-9 * (1.0 + length);
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    const Vec3& a = vertices_[triangles_[t][0]];
+    const Vec3& b = vertices_[triangles_[t][1]];
+    const Vec3& c = vertices_[triangles_[t][2]];
+    const Vec3 n = TriangleCross(a, b, c).normalized();
+    double dist = 0.0;
+    if (!std::isfinite(n.x()) || !RayPlaneDistance(origin, dir, a, n, &dist)) continue;
+    if (dist < -slack || dist > length + slack) continue;
+    if (InsideTriangleCrossProduct(origin + dist * dir, a, b, c, n)) out->push_back(static_cast<int>(t));
+  }
+}
+
+void BruteForceLocator::TrianglesNearPoint(const Vec3& p, double radius, std::vector<int>* out) const {
+  // every triangle whose bounding box comes within the radius
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    const Vec3& a = vertices_[triangles_[t][0]];
+    const Vec3& b = vertices_[triangles_[t][1]];
+    const Vec3& c = vertices_[triangles_[t][2]];
+    const Vec3 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+    const Vec3 nearest = p.cwiseMax(lo).cwiseMin(hi);
+    if ((nearest - p).norm() <= radius) out->push_back(static_cast<int>(t));
+  }
+}
+
+LocatorFactory MakeBruteForceLocatorFactory() {
+  return [](const TriMesh& mesh) { return std::make_unique<BruteForceLocator>(mesh); };
+}
+
+}  // namespace dymesh

@@ -1,0 +1,78 @@
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "dymesh/core/mesh.h"
+#include "dymesh/core/node_force.h"
+#include "dymesh/core/stiffness.h"
+
+/// Bodies: the immutable model (mesh, stiffness, inertia) and the mutable state (pose, crush).
+namespace dymesh {
+
+/// Immutable description of one body (shared read-only between runs).
+struct BodyModel {
+  std::string name;
+  TriMesh mesh;                      ///< rest (undamaged) mesh in the body frame, origin at the CG [m]
+  VertexTriangles vertex_triangles;  ///< CSR adjacency of `mesh`
+  std::vector<BodySurface> surface;  ///< surface class per vertex (n_vertices)
+  std::array<Stiffness, kBodySurfaceCount> stiffness{};  ///< per-area stiffness by surface
+  double mass = 0.0;                 ///< [kg]
+  Mat3 inertia = Mat3::Identity();   ///< [kg m^2] about the CG, body axes
+  double restitution = 0.0;          ///< [-] e of spec §6
+  double friction = 0.0;             ///< [-] vehicle-to-vehicle mu of spec §7
+  bool rigid = false;                ///< barriers and poles: take no crush
+
+  /// Stiffness of vertex v (its surface's coefficients).
+  const Stiffness& VertexStiffness(int v) const { return stiffness[static_cast<int>(surface[v])]; }
+};
+
+/// Builds a model: adjacency and surface classes from `mesh` (already in the body frame about the CG).
+BodyModel MakeBodyModel(std::string name, TriMesh mesh, const std::array<Stiffness, kBodySurfaceCount>& stiffness,
+                        double mass, const Mat3& inertia, double restitution, double friction, bool rigid);
+
+/// Rigid-body pose and velocity of a body (spec §8), SAE axes, earth frame z down.
+struct RigidState {
+  Vec3 position{0, 0, 0};   ///< [m] CG in the earth frame
+  double roll = 0, pitch = 0, yaw = 0;  ///< [rad] Euler angles (phi, theta, psi)
+  Vec3 velocity{0, 0, 0};   ///< [m/s] CG velocity, earth frame
+  Vec3 omega{0, 0, 0};      ///< [rad/s] angular velocity (p, q, r), body frame
+
+  /// Direction-cosine matrix, body -> earth.
+  Mat3 Rotation() const { return BodyToEarth(roll, pitch, yaw); }
+};
+
+/// Mutable state of one body: pose plus structure-of-arrays vertex and triangle state.
+struct BodyState {
+  RigidState rigid;
+  std::vector<Vec3> vertices;        ///< [m] current (damaged) body-frame position (n_vertices)
+  std::vector<Vec3> delta;           ///< [m] deformation vector Delta, body frame (n_vertices)
+  std::vector<double> delta_max;     ///< [m] DeltaMaxTotal, largest deflection reached (n_vertices)
+  std::vector<UnloadState> unload;   ///< unloading state (n_vertices)
+  std::vector<double> node_force;    ///< [N] last node force magnitude (n_vertices)
+  std::vector<double> node_area;     ///< [m^2] last tributary area projected on the pushback direction (n_vertices)
+  std::vector<int> update_step;      ///< step of the node's last update, -1 before any (n_vertices)
+  std::vector<double> step_start_deflection;  ///< [m] |Delta| when the current step began (n_vertices)
+  std::vector<Vec3> tri_normal;      ///< [-] unit outward normal, body frame (n_triangles)
+  std::vector<Vec3> tri_centre;      ///< [m] centre, body frame (n_triangles)
+  std::vector<double> tri_area;      ///< [m^2] current area (n_triangles)
+  std::vector<double> tri_area_orig; ///< [m^2] undamaged area (n_triangles)
+  std::vector<int> touching;         ///< vertices in contact at their last update, ascending
+  double crush_energy = 0.0;         ///< [J] work done on the nodes (integral F d delta)
+  double friction_energy = 0.0;      ///< [J] energy dissipated by contact friction at this body's slave nodes
+};
+
+/// Fresh state at rest pose: undamaged vertices, triangle normals and areas.
+BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid);
+
+/// Recomputes normal, centre and area of every triangle touching `vertices` (body frame).
+void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, BodyState* state);
+
+/// Area-weighted average outward normal of vertex v (USE_LOCAL_AVERAGE_NORMAL), body frame, unit.
+Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& state, int v);
+
+/// Tributary area of vertex v (a third of each surrounding triangle) projected on the plane normal
+/// to the pushback direction `dir` (body frame, pointing into the body): the area A_v of spec §3.
+double ProjectedNodeArea(const BodyModel& model, const BodyState& state, int v, const Vec3& dir);
+
+}  // namespace dymesh

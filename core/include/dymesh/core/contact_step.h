@@ -1,0 +1,80 @@
+#pragma once
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "dymesh/core/body.h"
+#include "dymesh/core/locator.h"
+#include "dymesh/core/options.h"
+
+/// The DyMESH contact step (spec §2, §3, §5, §6, §7, §8): Location, Restoration, node forces,
+/// friction and sums to each CG, for every pair of bodies whose bounds overlap.
+namespace dymesh {
+
+/// Collision force and moment on one body at its CG (spec §8, SumForcesMoments).
+struct CgLoads {
+  Vec3 force_earth{0, 0, 0};   ///< [N] earth frame
+  Vec3 force_body{0, 0, 0};    ///< [N] body frame (SumForce)
+  Vec3 moment_body{0, 0, 0};   ///< [N m] about the CG, body frame (SumMoment)
+};
+
+/// Per-step counts of what Location and Restoration met (reported, never thrown).
+struct ContactDiagnostics {
+  long long candidates = 0;        ///< slave nodes inside the master's bounds
+  long long located = 0;           ///< slave nodes matched to a master triangle
+  long long touching = 0;          ///< located nodes carrying force
+  long long too_far_limited = 0;   ///< restorations cut by the TOOFAR margin
+  long long max_crush_limited = 0; ///< restorations cut by the maximum crush
+  long long growth_limited = 0;    ///< reloads cut by MAX_GROW_UNLOAD
+  long long reduced = 0;           ///< restorations reduced by PushbackReduction (version 4)
+  long long non_finite = 0;        ///< node updates skipped by the NaN guard
+  int pairs_in_contact = 0;        ///< pairs whose bounds overlapped
+
+  void Add(const ContactDiagnostics& o);
+};
+
+/// What one contact step produced.
+struct StepResult {
+  std::vector<CgLoads> loads;      ///< per body
+  ContactDiagnostics diagnostics;
+};
+
+/// Owns the bodies' states and one locator per body; the seam a host calls every collision step.
+class ContactEngine {
+ public:
+  ContactEngine(std::vector<std::shared_ptr<const BodyModel>> models, std::vector<RigidState> initial,
+                ContactOptions options, const LocatorFactory& make_locator);
+
+  int body_count() const { return static_cast<int>(models_.size()); }
+  const BodyModel& model(int i) const { return *models_[i]; }
+  const BodyState& state(int i) const { return states_[i]; }
+  const ContactOptions& options() const { return options_; }
+
+  /// Host input: pose and velocities of body i for the coming step.
+  void SetRigidState(int i, const RigidState& rigid) { states_[i].rigid = rigid; }
+
+  /// One collision time step of length dt [s] at the current poses: updates crush and returns the
+  /// collision loads at each CG. Determinism: pairs, passes and nodes run in a fixed order.
+  StepResult Step(double dt);
+
+ private:
+  struct PassFrame;
+  struct Located;
+  void RunPass(int master, int slave, std::vector<int>* touching, double dt, double weight,
+               std::vector<Vec3>* force_earth, std::vector<Vec3>* moment_earth, ContactDiagnostics* diag);
+  bool LocateNode(const PassFrame& f, int v, std::vector<int>* scratch, Located* out) const;
+  double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
+                     ContactDiagnostics* diag, Vec3* pushback_dir_slave);
+  bool BoundsOverlap(int a, int b) const;
+  void RefreshBounds(int body);
+
+  std::vector<std::shared_ptr<const BodyModel>> models_;
+  std::vector<BodyState> states_;
+  std::vector<std::unique_ptr<Locator>> locators_;
+  std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame bounds of the current vertices, per body
+  std::vector<std::array<std::vector<int>, 2>> touching_;  // per pair (a<b): nodes of a, of b touching the other
+  ContactOptions options_;
+  int step_index_ = 0;
+};
+
+}  // namespace dymesh

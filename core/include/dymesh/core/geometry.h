@@ -1,0 +1,32 @@
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+/// Geometry helpers of the model: triangle normal and area, the cross-product inside test (spec §2),
+/// ray-plane distance, and the roll-pitch-yaw direction-cosine matrix (spec §8).
+namespace dymesh {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+/// Unnormalised triangle normal (a-b-c counter-clockwise seen from outside); its length is twice the area.
+inline Vec3 TriangleCross(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+
+/// InsidePolygonTest_CrossProd (spec §2): q lies inside triangle abc (normal n) when it is on the
+/// inner side of all three edges; points on an edge or vertex count as inside (relative tolerance
+/// `edge_tolerance` of the edge length squared).
+bool InsideTriangleCrossProduct(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c,
+                                const Vec3& n, double edge_tolerance = 1e-12);
+
+/// Distance t along unit `dir` from `origin` to the plane of triangle (point a, unit normal n);
+/// returns false when the ray is (nearly) parallel to the plane.
+bool RayPlaneDistance(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& n, double* t);
+
+/// Euler-angle DCM (spec §8, Amtx): maps body-frame vectors to the earth frame,
+/// R = Rz(yaw) * Ry(pitch) * Rx(roll), SAE axes (x forward, y right, z down).
+Mat3 BodyToEarth(double roll, double pitch, double yaw);
+
+/// Euler-angle rates from body angular velocity (p, q, r) for the roll-pitch-yaw sequence.
+Vec3 EulerRates(double roll, double pitch, const Vec3& body_rates);
+
+}  // namespace dymesh

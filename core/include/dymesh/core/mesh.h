@@ -1,0 +1,58 @@
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "dymesh/core/geometry.h"
+
+/// Triangle meshes: storage, welding, vertex->triangle adjacency, subdivision, box generator, checks.
+namespace dymesh {
+
+/// An indexed triangle mesh (counter-clockwise triangles seen from outside).
+struct TriMesh {
+  std::vector<Vec3> vertices;                 // [m] positions (n_vertices)
+  std::vector<std::array<int, 3>> triangles;  // vertex indices (n_triangles)
+};
+
+/// CSR vertex -> triangle adjacency: triangles of vertex v are ids[offsets[v] .. offsets[v+1]).
+struct VertexTriangles {
+  std::vector<int> offsets;  // (n_vertices + 1)
+  std::vector<int> ids;      // (3 n_triangles)
+};
+
+/// Counts that tell whether a mesh is usable and how it is shaped.
+struct MeshStats {
+  int vertices = 0;
+  int triangles = 0;
+  int degenerate_triangles = 0;  ///< zero-area triangles
+  int open_edges = 0;            ///< edges used by one triangle
+  int nonmanifold_edges = 0;     ///< edges used by more than two triangles
+  Vec3 min{0, 0, 0}, max{0, 0, 0};
+};
+
+/// Merges vertices closer than `tolerance` (grid hashing), drops triangles that collapse; stable order.
+TriMesh Weld(const TriMesh& mesh, double tolerance);
+
+/// Builds the CSR vertex -> triangle adjacency.
+VertexTriangles BuildVertexTriangles(const TriMesh& mesh);
+
+/// 1-to-4 midpoint subdivision: same surface, four times the triangles, shared midpoints.
+TriMesh Subdivide(const TriMesh& mesh);
+
+/// A closed box centred at the origin, `length` x `width` x `height` along x, y, z, with
+/// `nx`, `ny`, `nz` grid segments along each axis; welded, outward normals.
+TriMesh MakeBox(double length, double width, double height, int nx, int ny, int nz);
+
+/// Vertex, triangle, edge and bounds statistics.
+MeshStats ComputeStats(const TriMesh& mesh);
+
+/// Signed volume (positive when triangles wind outward on a closed mesh).
+double SignedVolume(const TriMesh& mesh);
+
+/// Reverses every triangle's winding (used when a closed mesh is wound inward).
+void FlipWinding(TriMesh* mesh);
+
+/// Removes zero-area triangles (returns how many).
+int RemoveDegenerateTriangles(TriMesh* mesh);
+
+}  // namespace dymesh

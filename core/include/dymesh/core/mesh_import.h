@@ -1,0 +1,21 @@
+#pragma once
+#include <string>
+
+#include "dymesh/core/mesh.h"
+#include "dymesh/core/scenario.h"
+
+/// Mesh files in (assimp: OBJ, STL, PLY, glTF, ...) and out (OBJ), and a body's mesh from its source.
+namespace dymesh {
+
+/// Loads every triangle of a mesh file into one mesh (file units, file axes), welded.
+/// Throws InputError(path, field, ...) for a missing, unreadable or empty file.
+TriMesh LoadMeshFile(const std::string& path, const std::string& field);
+
+/// The body-frame mesh of a body: load or generate, map axes, scale, subdivide, weld, drop
+/// degenerate triangles, orient outward. `field` names the JSON path for messages.
+TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file, const std::string& field);
+
+/// Writes a mesh as Wavefront OBJ, to a temporary name renamed into place.
+void WriteObj(const TriMesh& mesh, const std::string& path, const std::string& comment);
+
+}  // namespace dymesh

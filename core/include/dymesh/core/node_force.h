@@ -1,0 +1,41 @@
+#pragma once
+#include <cstdint>
+
+#include "dymesh/core/options.h"
+#include "dymesh/core/stiffness.h"
+
+/// NodeForce (spec §3) with saturation, the rebound branch and the unloading state machine (spec §6).
+namespace dymesh {
+
+/// Unloading state of a node (spec §6).
+enum class UnloadState : std::uint8_t {
+  kCannotUnload,       ///< delta_max below UNLOAD_BEGIN: purely plastic, no rebound
+  kStartUnload,        ///< delta_max just passed UNLOAD_BEGIN
+  kCanUnload,          ///< loaded, at its peak deflection
+  kNowUnloading,       ///< on the rebound branch
+  kFinishedUnloading,  ///< relaxed to (1-e) delta_max: no force until reloaded
+};
+
+/// Loading pressure g(delta) [N/m^2], Eq. 1 and Eq. 2: A below the null band, the cubic in
+/// (delta - delta_0) above it, held at its value at SatCrush beyond saturation.
+double LoadingPressure(const Stiffness& k, double delta, double null_band);
+
+/// Rebound pressure [N/m^2] (spec §6): zero for delta <= (1-e) delta_max (Eq. 8), else the law of
+/// `rebound_law` at delta_r = delta - (1-e) delta_max, capped by the Ku unloading line when Ku > 0.
+double ReboundPressure(const Stiffness& k, double delta, double delta_max, double restitution,
+                       double null_band, ReboundLaw rebound_law);
+
+/// Next unloading state after a node update (spec §6), given whether the node touches the master.
+UnloadState NextUnloadState(UnloadState state, bool touching, double delta, double delta_max,
+                            double restitution, const ContactOptions& options);
+
+/// Node pressure [N/m^2] for the state reached: loading law, rebound branch, or zero.
+double NodePressure(UnloadState state, bool touching, const Stiffness& k, double delta,
+                    double delta_max, double restitution, const ContactOptions& options);
+
+/// Crush-sharing fraction theta (spec §5, Eq. 4-6): the slave's share of the penetration.
+/// `a_master`, `b_master` are the master triangle's corner averages; a rigid master gives 1.
+double CrushShare(double a_master, double b_master, double a_slave, double b_slave,
+                  double delta_total);
+
+}  // namespace dymesh

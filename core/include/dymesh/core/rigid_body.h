@@ -1,0 +1,36 @@
+#pragma once
+#include <functional>
+
+#include "dymesh/core/body.h"
+
+/// The 6-DOF rigid-body host (spec §8): integrates each body's equations of motion over a
+/// collision time step with the roll-pitch-yaw DCM, plus the external loads a scenario asks for.
+namespace dymesh {
+
+/// How a body may move besides the collision loads.
+enum class MotionModel {
+  kFree6Dof,      ///< all six degrees of freedom, no gravity
+  kPlanar,        ///< height, roll and pitch held: x, y and yaw only (default for vehicles)
+  kGravityGround, ///< 6-DOF with gravity and a stiff, critically damped ground support at the initial CG height
+  kFixed,         ///< does not move (a barrier bolted to the ground)
+};
+
+/// Extra loads a host adds to a body: force in the earth frame, moment in the body frame.
+struct ExternalLoads {
+  Vec3 force_earth{0, 0, 0};  ///< [N]
+  Vec3 moment_body{0, 0, 0};  ///< [N m]
+};
+
+/// Loads the motion model adds (gravity and ground support); `rest_height` is the CG height it holds.
+ExternalLoads MotionModelLoads(MotionModel motion, const BodyModel& model, const RigidState& state,
+                               double rest_height);
+
+/// Advances `state` by dt under `force_earth` and `moment_body` (semi-implicit Euler: velocities
+/// first, then positions and Euler angles with the new rates), respecting the motion model.
+void IntegrateRigidBody(const BodyModel& model, MotionModel motion, const Vec3& force_earth,
+                        const Vec3& moment_body, double dt, RigidState* state);
+
+/// Kinetic energy [J], translational plus rotational.
+double KineticEnergy(const BodyModel& model, const RigidState& state);
+
+}  // namespace dymesh

@@ -1,0 +1,76 @@
+#pragma once
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dymesh/core/options.h"
+#include "dymesh/core/rigid_body.h"
+#include "dymesh/core/stiffness.h"
+
+/// The scenario: what a user writes in JSON, converted to SI and validated at load.
+namespace dymesh {
+
+/// Unit system of a scenario's numbers (and of its outputs).
+enum class UnitSystem { kSI, kUS };
+
+/// A refused input: names the file, the JSON path of the field and what was expected.
+class InputError : public std::runtime_error {
+ public:
+  InputError(const std::string& file, const std::string& field, const std::string& message)
+      : std::runtime_error(file + ": " + field + ": " + message), file_(file), field_(field) {}
+  const std::string& file() const { return file_; }
+  const std::string& field() const { return field_; }
+
+ private:
+  std::string file_, field_;
+};
+
+/// Where a body's geometry comes from: a mesh file, or a generated box.
+struct MeshSource {
+  std::string file;                 ///< absolute path; empty for a box
+  double scale = 1.0;               ///< [m per file unit] (unit and scale combined)
+  std::array<std::string, 3> axes{"x", "y", "z"};  ///< body x, y, z taken from these signed mesh axes
+  std::optional<double> fit_length; ///< [m] scale so the body-x extent equals this
+  bool box = false;
+  Vec3 box_size{0, 0, 0};           ///< [m] length, width, height
+  std::array<int, 3> box_segments{1, 1, 1};
+  int subdivisions = 0;             ///< 1-to-4 subdivisions applied after loading
+};
+
+/// One body as the scenario describes it (SI).
+struct BodySpec {
+  std::string name;
+  MeshSource mesh;
+  std::optional<Vec3> cg;           ///< [m] CG in the mesh's body-axis coordinates; default: bounds centre
+  double mass = 0.0;                ///< [kg]
+  std::optional<Vec3> inertia_diagonal;  ///< [kg m^2] Ixx, Iyy, Izz; default: box of the mesh bounds
+  std::array<Stiffness, kBodySurfaceCount> stiffness{};
+  double restitution = 0.0;
+  double friction = 0.0;
+  bool rigid = false;
+  MotionModel motion = MotionModel::kPlanar;
+  RigidState initial;               ///< earth-frame pose and velocities at t = 0
+};
+
+/// A whole run.
+struct Scenario {
+  std::string file;                 ///< path it was read from (for messages)
+  std::string name;
+  UnitSystem units = UnitSystem::kSI;
+  double time_step = 0.0005;        ///< [s]
+  double duration = 0.25;           ///< [s]
+  bool stop_at_separation = true;   ///< end once every pair has separated after contact
+  ContactOptions contact;
+  std::vector<BodySpec> bodies;
+};
+
+/// Reads and validates a scenario file; mesh paths are resolved against the file's folder.
+/// Throws InputError naming the file, the field and what was expected.
+Scenario LoadScenario(const std::string& path);
+
+/// Parses scenario JSON text (`file` is used in messages and to resolve relative paths).
+Scenario ParseScenario(const std::string& json_text, const std::string& file);
+
+}  // namespace dymesh

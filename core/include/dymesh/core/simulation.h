@@ -1,0 +1,64 @@
+#pragma once
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "dymesh/core/contact_step.h"
+#include "dymesh/core/scenario.h"
+
+/// A self-contained run: bodies, contact engine, rigid-body host and recorded time history.
+namespace dymesh {
+
+/// One recorded instant for one body.
+struct BodySample {
+  RigidState rigid;
+  CgLoads loads;              ///< collision loads over the step that ended here
+  Vec3 accel_body{0, 0, 0};   ///< [m/s^2] CG acceleration from collision loads, body frame
+  double crush_energy = 0.0;  ///< [J] cumulative
+  double friction_energy = 0.0; ///< [J] cumulative
+};
+
+/// One recorded instant.
+struct Sample {
+  double time = 0.0;                ///< [s]
+  std::vector<BodySample> bodies;
+};
+
+/// A run of a scenario; owns everything it touches (no global state).
+class Simulation {
+ public:
+  Simulation(const Scenario& scenario, const LocatorFactory& make_locator);
+
+  /// Runs to the scenario's duration (or separation); `on_step(time)` is called after each step.
+  void Run(const std::function<void(double)>& on_step = {});
+
+  /// Advances one step; returns false once finished.
+  bool Advance();
+
+  const Scenario& scenario() const { return scenario_; }
+  const ContactEngine& engine() const { return *engine_; }
+  const std::vector<Sample>& history() const { return history_; }
+  const ContactDiagnostics& diagnostics() const { return diagnostics_; }
+  int steps() const { return steps_; }
+  double time() const { return time_; }
+  double first_contact_time() const { return first_contact_time_; }
+  double last_contact_time() const { return last_contact_time_; }
+
+ private:
+  void Record(const StepResult* step);
+
+  Scenario scenario_;
+  std::unique_ptr<ContactEngine> engine_;
+  std::vector<double> rest_height_;
+  std::vector<Sample> history_;
+  ContactDiagnostics diagnostics_;
+  int steps_ = 0;
+  double time_ = 0.0;
+  double first_contact_time_ = -1.0, last_contact_time_ = -1.0;
+  bool finished_ = false;
+};
+
+/// Loads the meshes of a scenario and builds the body models (shared, immutable).
+std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario);
+
+}  // namespace dymesh

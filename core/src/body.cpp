@@ -1,0 +1,94 @@
+#include "dymesh/core/body.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace dymesh {
+
+BodyModel MakeBodyModel(std::string name, TriMesh mesh, const std::array<Stiffness, kBodySurfaceCount>& stiffness,
+                        double mass, const Mat3& inertia, double restitution, double friction, bool rigid) {
+  BodyModel m;
+  m.name = std::move(name);
+  m.mesh = std::move(mesh);
+  m.vertex_triangles = BuildVertexTriangles(m.mesh);
+  m.stiffness = stiffness;
+  m.mass = mass;
+  m.inertia = inertia;
+  m.restitution = restitution;
+  m.friction = friction;
+  m.rigid = rigid;
+  // surface class of each vertex from its rest local average normal (DefineVertStiffness)
+  const BodyState rest = MakeBodyState(m, RigidState{});
+  m.surface.resize(m.mesh.vertices.size());
+  for (size_t v = 0; v < m.surface.size(); ++v) {
+    m.surface[v] = ClassifySurface(LocalAverageNormal(m, rest, static_cast<int>(v)));
+  }
+  return m;
+}
+
+BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid) {
+  const size_t nv = model.mesh.vertices.size(), nt = model.mesh.triangles.size();
+  BodyState s;
+  s.rigid = rigid;
+  s.vertices = model.mesh.vertices;
+  s.delta.assign(nv, Vec3::Zero());
+  s.delta_max.assign(nv, 0.0);
+  s.unload.assign(nv, UnloadState::kCannotUnload);
+  s.node_force.assign(nv, 0.0);
+  s.node_area.assign(nv, 0.0);
+  s.update_step.assign(nv, -1);
+  s.step_start_deflection.assign(nv, 0.0);
+  s.tri_normal.assign(nt, Vec3::Zero());
+  s.tri_centre.assign(nt, Vec3::Zero());
+  s.tri_area.assign(nt, 0.0);
+  // triangle normals, centres and areas of the undamaged mesh
+  std::vector<int> all(nv);
+  for (size_t v = 0; v < nv; ++v) all[v] = static_cast<int>(v);
+  UpdateTriangles(model, all, &s);
+  s.tri_area_orig = s.tri_area;
+  return s;
+}
+
+void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, BodyState* s) {
+  const auto& adj = model.vertex_triangles;
+  for (int v : vertices) {
+    for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
+      // recompute each triangle around a moved vertex (a triangle may be done more than once)
+      const int t = adj.ids[k];
+      const auto& tri = model.mesh.triangles[t];
+      const Vec3& a = s->vertices[tri[0]];
+      const Vec3& b = s->vertices[tri[1]];
+      const Vec3& c = s->vertices[tri[2]];
+      const Vec3 cross = TriangleCross(a, b, c);
+      const double twice_area = cross.norm();
+      s->tri_area[t] = 0.5 * twice_area;
+      s->tri_normal[t] = twice_area > 0.0 ? Vec3(cross / twice_area) : Vec3::Zero();
+      s->tri_centre[t] = (a + b + c) / 3.0;
+    }
+  }
+}
+
+Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& s, int v) {
+  // area-weighted mean of the surrounding triangle normals
+  const auto& adj = model.vertex_triangles;
+  Vec3 sum = Vec3::Zero();
+  for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
+    const int t = adj.ids[k];
+    sum += s.tri_area[t] * s.tri_normal[t];
+  }
+  const double len = sum.norm();
+  return len > 0.0 ? Vec3(sum / len) : Vec3::Zero();
+}
+
+double ProjectedNodeArea(const BodyModel& model, const BodyState& s, int v, const Vec3& dir) {
+  // only faces turned toward the contact (outward normal against the pushback) carry pressure
+  const auto& adj = model.vertex_triangles;
+  double area = 0.0;
+  for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
+    const int t = adj.ids[k];
+    area += s.tri_area[t] * std::max(0.0, -s.tri_normal[t].dot(dir));
+  }
+  return area / 3.0;
+}
+
+}  // namespace dymesh

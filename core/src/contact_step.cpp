@@ -1,0 +1,362 @@
+#include "dymesh/core/contact_step.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace dymesh {
+
+void ContactDiagnostics::Add(const ContactDiagnostics& o) {
+  candidates += o.candidates;
+  located += o.located;
+  touching += o.touching;
+  too_far_limited += o.too_far_limited;
+  max_crush_limited += o.max_crush_limited;
+  growth_limited += o.growth_limited;
+  reduced += o.reduced;
+  non_finite += o.non_finite;
+  pairs_in_contact += o.pairs_in_contact;
+}
+
+// slave-to-master transform and body kinematics of one pass (master frame = master body frame)
+struct ContactEngine::PassFrame {
+  const BodyModel* master_model;
+  const BodyModel* slave_model;
+  const BodyState* master;
+  BodyState* slave;
+  const Locator* master_locator;
+  Mat3 r_master, r_slave;   // body -> earth
+  Mat3 r_slave_to_master;   // slave body -> master body
+  Vec3 t_slave_to_master;   // slave CG in the master frame
+
+  Vec3 ToMaster(const Vec3& p_slave) const { return r_slave_to_master * p_slave + t_slave_to_master; }
+
+  // velocity of the slave node relative to the master material point it sits in, master frame
+  Vec3 RelativeVelocity(const Vec3& p_slave, const Vec3& p_master) const {
+    const Vec3 v_slave = slave->rigid.velocity + r_slave * slave->rigid.omega.cross(p_slave);
+    const Vec3 v_master = master->rigid.velocity + r_master * master->rigid.omega.cross(p_master);
+    return r_master.transpose() * (v_slave - v_master);
+  }
+};
+
+// a slave node matched to a master triangle (master frame)
+struct ContactEngine::Located {
+  int triangle = -1;
+  double depth = 0.0;        // [m] signed distance to the surface along dir (> 0 inside the master)
+  Vec3 dir{0, 0, 0};         // pushback direction, unit, master frame
+  Vec3 point{0, 0, 0};       // [m] contact point on the master triangle, master frame
+  Vec3 rel_velocity{0, 0, 0};  // [m/s] slave node relative to master, master frame
+};
+
+ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> models, std::vector<RigidState> initial,
+                             ContactOptions options, const LocatorFactory& make_locator)
+    : models_(std::move(models)), options_(options) {
+  const int n = body_count();
+  // one state, one locator and one bounds box per body; one touching list pair per body pair
+  for (int i = 0; i < n; ++i) {
+    states_.push_back(MakeBodyState(*models_[i], initial[i]));
+    locators_.push_back(make_locator(models_[i]->mesh));
+  }
+  bounds_min_.resize(n);
+  bounds_max_.resize(n);
+  for (int i = 0; i < n; ++i) RefreshBounds(i);
+  touching_.resize(static_cast<size_t>(n) * n);
+}
+
+void ContactEngine::RefreshBounds(int body) {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (const Vec3& p : states_[body].vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  bounds_min_[body] = lo;
+  bounds_max_[body] = hi;
+}
+
+bool ContactEngine::BoundsOverlap(int a, int b) const {
+  // earth-frame boxes around each body's rotated body-frame box, grown by the search reach
+  auto earth_box = [&](int i, Vec3* lo, Vec3* hi) {
+    const Vec3 centre = 0.5 * (bounds_min_[i] + bounds_max_[i]);
+    const Vec3 half = 0.5 * (bounds_max_[i] - bounds_min_[i]);
+    const Mat3 r = states_[i].rigid.Rotation();
+    const Vec3 c = states_[i].rigid.position + r * centre;
+    const Vec3 h = r.cwiseAbs() * half;
+    *lo = c - h;
+    *hi = c + h;
+  };
+  Vec3 alo, ahi, blo, bhi;
+  earth_box(a, &alo, &ahi);
+  earth_box(b, &blo, &bhi);
+  const double reach = options_.search_backoff + options_.toofar_maximum;
+  return (alo.array() <= bhi.array() + reach).all() && (blo.array() <= ahi.array() + reach).all();
+}
+
+StepResult ContactEngine::Step(double dt) {
+  const int n = body_count();
+  std::vector<Vec3> force_earth(n, Vec3::Zero()), moment_earth(n, Vec3::Zero());
+  StepResult result;
+  // every pair whose bounds overlap, in index order (determinism: fixed pair order)
+  for (int a = 0; a < n; ++a) {
+    for (int b = a + 1; b < n; ++b) {
+      if (models_[a]->rigid && models_[b]->rigid) continue;
+      if (!BoundsOverlap(a, b)) continue;
+      ++result.diagnostics.pairs_in_contact;
+      auto& touching = touching_[static_cast<size_t>(a) * n + b];
+      const int passes = options_.passes_per_step;
+      const double weight = 1.0 / passes;  // each pass estimates the whole interface force
+      for (int pass = 0; pass < passes; ++pass) {
+        // a rigid body is always the master; two deformable bodies swap roles every pass
+        int master = (pass % 2 == 0) ? a : b;
+        if (models_[a]->rigid) master = a;
+        if (models_[b]->rigid) master = b;
+        const int slave = master == a ? b : a;
+        RunPass(master, slave, &touching[slave == a ? 0 : 1], dt, weight, &force_earth, &moment_earth,
+                &result.diagnostics);
+      }
+    }
+  }
+  // spec §8 SumForcesMoments: resultants at each CG in the body frame
+  result.loads.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const Mat3 rt = states_[i].rigid.Rotation().transpose();
+    result.loads[i].force_earth = force_earth[i];
+    result.loads[i].force_body = rt * force_earth[i];
+    result.loads[i].moment_body = rt * moment_earth[i];
+  }
+  ++step_index_;
+  return result;
+}
+
+void ContactEngine::RunPass(int master, int slave, std::vector<int>* touching, double dt, double weight,
+                            std::vector<Vec3>* force_earth, std::vector<Vec3>* moment_earth,
+                            ContactDiagnostics* diag) {
+  PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
+              locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
+              Mat3::Identity(), Vec3::Zero()};
+  f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
+  f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
+  const double mu = 0.5 * (f.master_model->friction + f.slave_model->friction);
+
+  // cull: slave nodes inside the master's bounds grown by the search reach, plus nodes touching it
+  const double reach = options_.search_backoff + options_.toofar_maximum;
+  const Vec3 lo = bounds_min_[master].array() - reach, hi = bounds_max_[master].array() + reach;
+  std::vector<int> candidates;
+  const int nv = static_cast<int>(f.slave->vertices.size());
+  for (int v = 0; v < nv; ++v) {
+    const Vec3 p = f.ToMaster(f.slave->vertices[v]);
+    if ((p.array() >= lo.array()).all() && (p.array() <= hi.array()).all()) candidates.push_back(v);
+  }
+  std::vector<int> merged;
+  std::set_union(candidates.begin(), candidates.end(), touching->begin(), touching->end(),
+                 std::back_inserter(merged));
+  diag->candidates += static_cast<long long>(merged.size());
+
+  std::vector<int> now_touching, moved, scratch;
+  const std::vector<int>& was = *touching;
+  for (int v : merged) {
+    // locate, then restore and evaluate the node law
+    Located hit;
+    const bool found = LocateNode(f, v, &scratch, &hit);
+    if (found) ++diag->located;
+    const bool was_touching = std::binary_search(was.begin(), was.end(), v);
+    if (!found && !was_touching) continue;
+    const Vec3 old_position = f.slave->vertices[v];
+    Vec3 dir_slave;
+    const double node_force = RestoreNode(f, v, found ? &hit : nullptr, was_touching, dt, diag, &dir_slave);
+    if (f.slave->vertices[v] != old_position) moved.push_back(v);
+    if (node_force <= 0.0) continue;
+    now_touching.push_back(v);
+    ++diag->touching;
+
+    // node force on the slave along its pushback direction, friction against the sliding (spec §7)
+    const Vec3 dir_earth = f.r_master * hit.dir;
+    Vec3 force = node_force * dir_earth;
+    const Vec3 v_rel = f.r_master * hit.rel_velocity;
+    const Vec3 v_slide = v_rel - v_rel.dot(dir_earth) * dir_earth;
+    const double slide = v_slide.norm();
+    if (mu > 0.0 && slide > options_.friction_null_band) {
+      force -= (mu * node_force / slide) * v_slide;
+      f.slave->friction_energy += weight * mu * node_force * slide * dt;
+    }
+    // determinism: sums run in ascending node order within a fixed pass order
+    const Vec3 lever_slave = f.r_slave * f.slave->vertices[v];
+    const Vec3 lever_master = f.r_master * hit.point;
+    (*force_earth)[slave] += weight * force;
+    (*moment_earth)[slave] += weight * lever_slave.cross(force);
+    (*force_earth)[master] -= weight * force;
+    (*moment_earth)[master] -= weight * lever_master.cross(force);
+  }
+  *touching = std::move(now_touching);
+
+  // crushed nodes change the slave's triangles, bounds and search structure (refit)
+  if (!moved.empty()) {
+    UpdateTriangles(*f.slave_model, moved, f.slave);
+    RefreshBounds(slave);
+    locators_[slave]->Update(f.slave->vertices);
+  }
+}
+
+bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris, Located* out) const {
+  const Vec3& p_slave = f.slave->vertices[v];
+  const Vec3 p = f.ToMaster(p_slave);
+  const Vec3 v_rel = f.RelativeVelocity(p_slave, p);
+  const double backoff = options_.search_backoff, reach = options_.toofar_maximum;
+
+  // search direction (spec §2): the pushback direction, pointing out of the master into the slave
+  Vec3 dir = Vec3::Zero();
+  switch (options_.search_direction) {
+    case SearchDirection::kVelocity:
+      // along the line of relative motion, turned to point into the slave (also while separating)
+      if (v_rel.norm() > 1e-9) {
+        const Vec3 inward = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
+        dir = v_rel.normalized();
+        if (dir.dot(inward) < 0.0) dir = -dir;
+        break;
+      }
+      [[fallthrough]];  // no relative motion: fall back to the local normal
+    case SearchDirection::kLocalAverageNormal:
+      dir = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
+      break;
+    case SearchDirection::kSpecified:
+      dir = f.r_slave_to_master * options_.specified_direction.normalized();
+      break;
+    case SearchDirection::kPolyNormal:
+      break;  // per triangle below
+  }
+  const bool poly_normal = options_.search_direction == SearchDirection::kPolyNormal;
+  if (!poly_normal && dir.squaredNorm() == 0.0) return false;
+
+  // candidate master triangles from the locator, examined in triangle order (DyMESH surface lists)
+  tris->clear();
+  const Vec3 origin = p - backoff * dir;
+  if (poly_normal) {
+    f.master_locator->TrianglesNearPoint(p, std::max(backoff, reach), tris);
+  } else {
+    f.master_locator->TrianglesAlongSegment(origin, dir, backoff + reach, tris);
+  }
+  std::sort(tris->begin(), tris->end());
+  tris->erase(std::unique(tris->begin(), tris->end()), tris->end());
+
+  const int wanted = options_.stop_rule == StopRule::kAfterOne ? 1
+                     : options_.stop_rule == StopRule::kBestOfTwo ? 2 : INT32_MAX;
+  int accepted = 0;
+  for (int t : *tris) {
+    const auto& tri = f.master_model->mesh.triangles[t];
+    const Vec3& a = f.master->vertices[tri[0]];
+    const Vec3& b = f.master->vertices[tri[1]];
+    const Vec3& c = f.master->vertices[tri[2]];
+    const Vec3& n = f.master->tri_normal[t];
+    const Vec3 d = poly_normal ? n : dir;
+    // the node must lie behind the face: the pushback leaves the master through it
+    if (d.dot(n) <= 1e-9) continue;
+    double depth = 0.0;
+    if (!RayPlaneDistance(p, d, a, n, &depth)) continue;
+    if (depth < -backoff || depth > reach) continue;
+    const Vec3 q = p + depth * d;
+    if (!InsideTriangleCrossProduct(q, a, b, c, n)) continue;
+    // stop rule: first accepted, or the smallest |depth| so far (ties keep the lower index)
+    if (accepted == 0 || std::abs(depth) < std::abs(out->depth)) {
+      out->triangle = t;
+      out->depth = depth;
+      out->dir = d;
+      out->point = q;
+    }
+    if (++accepted >= wanted) break;
+  }
+  out->rel_velocity = v_rel;
+  return accepted > 0;
+}
+
+double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
+                                  ContactDiagnostics* diag, Vec3* dir_slave) {
+  BodyState& s = *f.slave;
+  const BodyModel& m = *f.slave_model;
+  const Stiffness& k = m.VertexStiffness(v);
+  const double e = m.restitution;
+  const UnloadState state = s.unload[v];
+  const bool can_spring = state == UnloadState::kStartUnload || state == UnloadState::kCanUnload ||
+                          state == UnloadState::kNowUnloading;
+  if (s.update_step[v] != step_index_) {
+    s.update_step[v] = step_index_;
+    s.step_start_deflection[v] = s.delta[v].norm();
+  }
+  const double deflection = s.delta[v].norm();
+  Vec3 delta = s.delta[v];
+  bool touching = false;
+  *dir_slave = hit ? Vec3(f.r_slave_to_master.transpose() * hit->dir) : Vec3::Zero();
+
+  if (hit && hit->depth >= -options_.contact_tolerance) {
+    // spec §5: the slave takes theta of the penetration; a rigid master takes none
+    const double depth = std::max(hit->depth, 0.0);
+    double theta = 1.0;
+    if (!f.master_model->rigid) {
+      const auto& tri = f.master_model->mesh.triangles[hit->triangle];
+      double a_m = 0.0, b_m = 0.0;
+      for (int corner : tri) {
+        a_m += f.master_model->VertexStiffness(corner).A / 3.0;
+        b_m += f.master_model->VertexStiffness(corner).B / 3.0;
+      }
+      theta = CrushShare(a_m, b_m, k.A, k.B, deflection + depth);
+    }
+    double push = theta * depth;
+    // spec §2 PushbackReduction (version 4 only): withhold a fraction, at most PUSHBACK_REDUCE_LIMIT
+    if (options_.version == 4 && push > 0.0) {
+      push -= std::min(push * options_.pushback_reduction, options_.pushback_reduce_limit);
+      ++diag->reduced;
+    }
+    // spec §2 TOOFAR_MARGIN: no restoring farther than the relative motion of a step plus the margin
+    const double too_far = hit->rel_velocity.norm() * dt + options_.toofar_margin;
+    if (push > too_far) {
+      push = too_far;
+      ++diag->too_far_limited;
+    }
+    // Maximum Crush (spec §4 dialog): the node bottoms out
+    if (k.max_crush > 0.0 && deflection + push > k.max_crush) {
+      push = std::max(k.max_crush - deflection, 0.0);
+      ++diag->max_crush_limited;
+    }
+    // spec §6 MAX_GROW_UNLOAD: a node reloading below its peak grows at most this much per step
+    if (state == UnloadState::kNowUnloading || state == UnloadState::kFinishedUnloading) {
+      const double cap = std::max(s.step_start_deflection[v] + options_.max_grow_unload - deflection, 0.0);
+      if (push > cap) {
+        push = cap;
+        ++diag->growth_limited;
+      }
+    }
+    delta += push * *dir_slave;
+    touching = true;
+  } else if (can_spring && deflection > 0.0) {
+    // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max
+    const double gap = hit ? -hit->depth : INFINITY;
+    const double available = std::max(deflection - (1.0 - e) * s.delta_max[v], 0.0);
+    const double spring = std::min(gap, available);
+    delta *= (deflection - spring) / deflection;
+    touching = hit && gap <= available;
+  } else if (!hit && !was_touching) {
+    return 0.0;
+  }
+
+  // NaN guard: a non-finite update is counted and dropped
+  const double new_deflection = delta.norm();
+  if (!std::isfinite(new_deflection)) {
+    ++diag->non_finite;
+    return 0.0;
+  }
+
+  // spec §6: DeltaMaxTotal, the unloading state machine and the node law
+  s.delta_max[v] = std::max(s.delta_max[v], new_deflection);
+  s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
+  const double area = touching ? ProjectedNodeArea(m, s, v, *dir_slave) : 0.0;
+  const double force =
+      area * NodePressure(s.unload[v], touching, k, new_deflection, s.delta_max[v], e, options_);
+
+  // work on the node (trapezoid over the deflection change), then commit the new position
+  s.crush_energy += 0.5 * (s.node_force[v] + force) * (new_deflection - deflection);
+  s.node_force[v] = force;
+  s.node_area[v] = area;
+  s.delta[v] = delta;
+  s.vertices[v] = m.mesh.vertices[v] + delta;
+  return force;
+}
+
+}  // namespace dymesh

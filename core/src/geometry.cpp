@@ -1,0 +1,51 @@
+#include "dymesh/core/geometry.h"
+
+#include <cmath>
+
+namespace dymesh {
+
+bool InsideTriangleCrossProduct(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c,
+                                const Vec3& n, double edge_tolerance) {
+  // spec §2 InsidePolygonTest_CrossProd: q must be left of every edge seen along n
+  const Vec3* corners[3] = {&a, &b, &c};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& p0 = *corners[i];
+    const Vec3& p1 = *corners[(i + 1) % 3];
+    const Vec3 edge = p1 - p0;
+    const double side = edge.cross(q - p0).dot(n);
+    // points on the edge (within the relative tolerance) count as inside
+    if (side < -edge_tolerance * edge.squaredNorm() * n.norm()) return false;
+  }
+  return true;
+}
+
+bool RayPlaneDistance(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& n, double* t) {
+  // distance along dir to the plane through a with normal n
+  const double denom = dir.dot(n);
+  if (std::abs(denom) < 1e-12) return false;
+  *t = (a - origin).dot(n) / denom;
+  return true;
+}
+
+Mat3 BodyToEarth(double roll, double pitch, double yaw) {
+  // spec §8 Amtx: yaw about z, then pitch about y, then roll about x (SAE, z down)
+  const double cf = std::cos(roll), sf = std::sin(roll);
+  const double ct = std::cos(pitch), st = std::sin(pitch);
+  const double cp = std::cos(yaw), sp = std::sin(yaw);
+  Mat3 r;
+  r << ct * cp, sf * st * cp - cf * sp, cf * st * cp + sf * sp,
+       ct * sp, sf * st * sp + cf * cp, cf * st * sp - sf * cp,
+       -st,     sf * ct,                cf * ct;
+  return r;
+}
+
+Vec3 EulerRates(double roll, double pitch, const Vec3& w) {
+  // kinematic equations of the roll-pitch-yaw sequence (singular at pitch = +-90 deg)
+  const double cf = std::cos(roll), sf = std::sin(roll);
+  const double ct = std::cos(pitch), tt = std::tan(pitch);
+  return Vec3(w.x() + (w.y() * sf + w.z() * cf) * tt,
+              w.y() * cf - w.z() * sf,
+              (w.y() * sf + w.z() * cf) / ct);
+}
+
+}  // namespace dymesh

@@ -1,0 +1,184 @@
+#include "dymesh/core/mesh_import.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+namespace dymesh {
+namespace {
+
+// weld tolerance relative to the bounds diagonal (merges only coincident vertices)
+constexpr double kRelativeWeldTolerance = 1e-9;
+
+// one signed axis of an axes mapping: body coordinate = sign * mesh coordinate[index]
+struct SignedAxis {
+  int index = -1;
+  double sign = 1.0;
+};
+
+// "x", "-y", ... to a signed axis (index -1 when not one of the six names)
+SignedAxis ParseSignedAxis(const std::string& name) {
+  SignedAxis axis;
+  std::string letter = name;
+  if (!letter.empty() && letter[0] == '-') {
+    axis.sign = -1.0;
+    letter = letter.substr(1);
+  }
+  if (letter == "x") axis.index = 0;
+  if (letter == "y") axis.index = 1;
+  if (letter == "z") axis.index = 2;
+  return axis;
+}
+
+// bounds diagonal of a mesh (0 when empty)
+double BoundsDiagonal(const TriMesh& mesh) {
+  if (mesh.vertices.empty()) return 0.0;
+  Vec3 lo = mesh.vertices.front(), hi = lo;
+  for (const Vec3& p : mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
+// weld with the tolerance relative to the mesh size
+TriMesh WeldRelative(const TriMesh& mesh) { return Weld(mesh, kRelativeWeldTolerance * BoundsDiagonal(mesh)); }
+
+// the axes mapping as three signed axes; refuses anything that is not a signed permutation
+std::array<SignedAxis, 3> AxesMapping(const MeshSource& source, const std::string& scenario_file,
+                                      const std::string& field) {
+  std::array<SignedAxis, 3> axes;
+  bool used[3] = {false, false, false};
+  for (int i = 0; i < 3; ++i) {
+    axes[i] = ParseSignedAxis(source.axes[i]);
+    if (axes[i].index < 0 || used[axes[i].index])
+      throw InputError(scenario_file, field + ".axes",
+                       "expected a permutation of x, y, z, each optionally negated (e.g. [\"x\", \"z\", \"-y\"]), got [\"" +
+                           source.axes[0] + "\", \"" + source.axes[1] + "\", \"" + source.axes[2] + "\"]");
+    used[axes[i].index] = true;
+  }
+  return axes;
+}
+
+// refuses a failed write: removes the temporary file, names the path and the system's reason
+[[noreturn]] void FailWrite(const std::string& path, const std::string& what) {
+  const std::string reason = std::strerror(errno);
+  std::remove((path + ".tmp").c_str());
+  throw std::runtime_error("cannot write mesh " + path + ": " + what + ": " + reason);
+}
+
+}  // namespace
+
+TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
+  // the file must exist
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, field, "file not found");
+  // read with assimp: triangles, shared vertices, every node's transform applied
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(
+      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
+  if (scene == nullptr)
+    throw InputError(path, field, std::string("cannot read mesh file: ") + importer.GetErrorString());
+  // collect the triangles of every mesh (points and lines are skipped)
+  TriMesh mesh;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* am = scene->mMeshes[m];
+    const int base = static_cast<int>(mesh.vertices.size());
+    for (unsigned v = 0; v < am->mNumVertices; ++v)
+      mesh.vertices.emplace_back(am->mVertices[v].x, am->mVertices[v].y, am->mVertices[v].z);
+    for (unsigned f = 0; f < am->mNumFaces; ++f) {
+      const aiFace& face = am->mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      mesh.triangles.push_back({base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[1]),
+                                base + static_cast<int>(face.mIndices[2])});
+    }
+  }
+  // refuse non-finite coordinates and empty results
+  for (const Vec3& p : mesh.vertices)
+    if (!p.allFinite()) throw InputError(path, field, "mesh has non-finite vertex coordinates");
+  if (mesh.triangles.empty()) throw InputError(path, field, "mesh file has no triangles");
+  // merge the vertices shared between assimp meshes
+  TriMesh welded = WeldRelative(mesh);
+  if (welded.triangles.empty()) throw InputError(path, field, "mesh file has no non-degenerate triangles");
+  return welded;
+}
+
+TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
+  // a generated box is already in body axes and metres
+  TriMesh mesh;
+  if (source.box) {
+    const Vec3& s = source.box_size;
+    if (!(s.minCoeff() > 0.0) || !s.allFinite())
+      throw InputError(scenario_file, field + ".box", "box sizes must be finite and > 0");
+    const auto& n = source.box_segments;
+    if (n[0] < 1 || n[1] < 1 || n[2] < 1)
+      throw InputError(scenario_file, field + ".box.segments", "box segments must be >= 1");
+    mesh = MakeBox(s.x(), s.y(), s.z(), n[0], n[1], n[2]);
+  } else {
+    // a file: load, map the axes (body i = sign * mesh axis), scale to metres
+    const std::array<SignedAxis, 3> axes = AxesMapping(source, scenario_file, field);
+    if (!(source.scale > 0.0) || !std::isfinite(source.scale))
+      throw InputError(scenario_file, field + ".scale", "expected a finite number > 0");
+    const TriMesh file_mesh = LoadMeshFile(source.file, field + ".file");
+    mesh.triangles = file_mesh.triangles;
+    mesh.vertices.reserve(file_mesh.vertices.size());
+    for (const Vec3& p : file_mesh.vertices)
+      mesh.vertices.emplace_back(axes[0].sign * p[axes[0].index] * source.scale,
+                                 axes[1].sign * p[axes[1].index] * source.scale,
+                                 axes[2].sign * p[axes[2].index] * source.scale);
+  }
+  // fit the body-x extent to the requested length (uniform scale)
+  if (source.fit_length) {
+    const double target = *source.fit_length;
+    if (!(target > 0.0) || !std::isfinite(target))
+      throw InputError(scenario_file, field + ".fit_length", "expected a finite length > 0");
+    const MeshStats stats = ComputeStats(mesh);
+    const double extent = stats.max.x() - stats.min.x();
+    if (!(extent > 0.0)) throw InputError(scenario_file, field + ".fit_length", "mesh has no extent along body x");
+    const double factor = target / extent;
+    for (Vec3& p : mesh.vertices) p *= factor;
+  }
+  // refine
+  if (source.subdivisions < 0 || source.subdivisions > 6)
+    throw InputError(scenario_file, field + ".subdivisions", "expected an integer in 0..6");
+  for (int i = 0; i < source.subdivisions; ++i) mesh = Subdivide(mesh);
+  // clean: drop degenerate triangles, merge coincident vertices
+  RemoveDegenerateTriangles(&mesh);
+  mesh = WeldRelative(mesh);
+  if (mesh.triangles.empty()) throw InputError(scenario_file, field, "mesh has no usable triangles");
+  // orient outward (open game shells too: the sign about the bounds centre decides)
+  if (SignedVolume(mesh) < 0.0) FlipWinding(&mesh);
+  return mesh;
+}
+
+void WriteObj(const TriMesh& mesh, const std::string& path, const std::string& comment) {
+  const std::string tmp = path + ".tmp";
+  // write under a temporary name
+  std::FILE* f = std::fopen(tmp.c_str(), "w");
+  if (f == nullptr) FailWrite(path, "cannot open " + tmp);
+  // comment lines (each line of the comment prefixed with '#')
+  std::fputs("# ", f);
+  for (char c : comment) {
+    if (c == '\n')
+      std::fputs("\n# ", f);
+    else
+      std::fputc(c, f);
+  }
+  std::fputc('\n', f);
+  // vertices and 1-based faces
+  for (const Vec3& p : mesh.vertices) std::fprintf(f, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+  for (const auto& t : mesh.triangles) std::fprintf(f, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+  const bool write_error = std::ferror(f) != 0;
+  if (std::fclose(f) != 0 || write_error) FailWrite(path, "write error on " + tmp);
+  // rename into place
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) FailWrite(path, "cannot rename " + tmp);
+}
+
+}  // namespace dymesh

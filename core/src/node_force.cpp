@@ -1,0 +1,90 @@
+#include "dymesh/core/node_force.h"
+
+#include <algorithm>
+
+namespace dymesh {
+namespace {
+
+// cubic of Eq. 1 in the offset x (= delta - delta_0 on loading, delta_r on rebound)
+double Cubic(const Stiffness& k, double x) { return k.A + x * (k.B + x * (k.C + x * k.D)); }
+
+}  // namespace
+
+double LoadingPressure(const Stiffness& k, double delta, double null_band) {
+  // spec §3 Eq. 2: beyond SatCrush the force is held at its saturation value
+  const double held = k.sat_crush > 0.0 ? std::min(delta, k.sat_crush) : delta;
+  // spec §3 Eq. 1: only the constant term acts inside the null band
+  if (held <= null_band) return k.A;
+  return Cubic(k, held - null_band);
+}
+
+double ReboundPressure(const Stiffness& k, double delta, double delta_max, double restitution,
+                       double null_band, ReboundLaw rebound_law) {
+  // spec §6 Eq. 8: no force once the node relaxed by the restitution fraction of delta_max
+  const double delta_r = delta - (1.0 - restitution) * delta_max;
+  if (delta_r <= 0.0 || restitution <= 0.0) return 0.0;
+  double pressure = 0.0;
+  if (rebound_law == ReboundLaw::kScaled) {
+    // the loading curve shrunk by e in both axes: returns e^2 of the loading work (restitution e)
+    pressure = restitution * LoadingPressure(k, delta_r / restitution, null_band);
+  } else {
+    // the spec's literal reading: the cubic evaluated at delta_r, saturated like Eq. 2
+    const double cap = k.sat_crush > 0.0 ? std::max(k.sat_crush - null_band, 0.0) : delta_r;
+    pressure = Cubic(k, std::min(delta_r, cap));
+  }
+  // the steeper Ku unloading line from the peak bounds the rebound when Ku is given
+  if (k.unload_slope > 0.0) {
+    const double line = LoadingPressure(k, delta_max, null_band) - k.unload_slope * (delta_max - delta);
+    pressure = std::min(pressure, std::max(line, 0.0));
+  }
+  return pressure;
+}
+
+UnloadState NextUnloadState(UnloadState state, bool touching, double delta, double delta_max,
+                            double restitution, const ContactOptions& o) {
+  const double relaxed = (1.0 - restitution) * delta_max + o.unload_stop;  // UNLOAD_STOP
+  const bool at_peak = delta >= delta_max - o.unload_pot;                  // UNLOAD_POT
+  switch (state) {
+    case UnloadState::kCannotUnload:
+      // UNLOAD_BEGIN: enough deflection to have something to give back
+      return delta_max >= o.unload_begin ? UnloadState::kStartUnload : state;
+    case UnloadState::kStartUnload:
+    case UnloadState::kCanUnload:
+      if (!touching) return UnloadState::kFinishedUnloading;
+      return at_peak ? UnloadState::kCanUnload : UnloadState::kNowUnloading;
+    case UnloadState::kNowUnloading:
+      if (!touching || delta <= relaxed) return UnloadState::kFinishedUnloading;
+      return at_peak ? UnloadState::kCanUnload : state;
+    case UnloadState::kFinishedUnloading:
+      // reloading: back on the rebound curve, or on the loading curve past the old peak
+      if (!touching || delta <= relaxed) return state;
+      return at_peak ? UnloadState::kCanUnload : UnloadState::kNowUnloading;
+  }
+  return state;
+}
+
+double NodePressure(UnloadState state, bool touching, const Stiffness& k, double delta,
+                    double delta_max, double restitution, const ContactOptions& o) {
+  if (!touching) return 0.0;
+  switch (state) {
+    case UnloadState::kCannotUnload:
+    case UnloadState::kStartUnload:
+    case UnloadState::kCanUnload:
+      return LoadingPressure(k, delta, o.null_band);
+    case UnloadState::kNowUnloading:
+      return ReboundPressure(k, delta, delta_max, restitution, o.null_band, o.rebound_law);
+    case UnloadState::kFinishedUnloading:
+      return 0.0;
+  }
+  return 0.0;
+}
+
+double CrushShare(double a_master, double b_master, double a_slave, double b_slave, double delta_total) {
+  // spec §5 Eq. 4-6: theta = F_master / (F_master + F_slave) at the full penetration
+  const double f_master = a_master + b_master * delta_total;
+  const double f_slave = a_slave + b_slave * delta_total;
+  const double sum = f_master + f_slave;
+  return sum > 0.0 ? f_master / sum : 0.5;
+}
+
+}  // namespace dymesh

@@ -1,0 +1,54 @@
+#include "dymesh/core/rigid_body.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dymesh/core/units.h"
+
+namespace dymesh {
+
+ExternalLoads MotionModelLoads(MotionModel motion, const BodyModel& model, const RigidState& s,
+                               double rest_height) {
+  ExternalLoads loads;
+  if (motion != MotionModel::kGravityGround || model.mass <= 0.0) return loads;
+  // weight (earth z down) against a ground support at the rest height: a stiff critically damped
+  // spring whose static deflection is 1 mm, so the car neither sinks nor bounces during the pulse
+  const double weight = model.mass * units::kStandardGravity;
+  const double stiffness = weight / 0.001;
+  const double damping = 2.0 * std::sqrt(stiffness * model.mass);
+  const double support = weight + stiffness * (s.position.z() - rest_height) + damping * s.velocity.z();
+  loads.force_earth = Vec3(0.0, 0.0, weight - std::max(support, 0.0));
+  return loads;
+}
+
+void IntegrateRigidBody(const BodyModel& model, MotionModel motion, const Vec3& force_earth,
+                        const Vec3& moment_body, double dt, RigidState* s) {
+  if (motion == MotionModel::kFixed || model.mass <= 0.0) return;
+  // translation: semi-implicit Euler (new velocity, then position)
+  Vec3 accel = force_earth / model.mass;
+  // rotation: Euler's equations in the body frame, I w' = M - w x I w
+  const Vec3& w = s->omega;
+  Vec3 w_dot = model.inertia.ldlt().solve(moment_body - w.cross(model.inertia * w));
+  if (motion == MotionModel::kPlanar) {
+    // planar option: height, roll and pitch held; yaw about the earth vertical only
+    accel.z() = 0.0;
+    const double izz = model.inertia(2, 2);
+    const Vec3 yaw_moment_earth = s->Rotation() * moment_body;
+    w_dot = Vec3(0.0, 0.0, yaw_moment_earth.z() / izz);
+    s->velocity.z() = 0.0;
+  }
+  s->velocity += accel * dt;
+  s->omega += w_dot * dt;
+  s->position += s->velocity * dt;
+  // Euler angles from the body rates (spec §8 DCM sequence)
+  const Vec3 rates = EulerRates(s->roll, s->pitch, s->omega);
+  s->roll += rates.x() * dt;
+  s->pitch += rates.y() * dt;
+  s->yaw += rates.z() * dt;
+}
+
+double KineticEnergy(const BodyModel& model, const RigidState& s) {
+  return 0.5 * model.mass * s.velocity.squaredNorm() + 0.5 * s.omega.dot(model.inertia * s.omega);
+}
+
+}  // namespace dymesh

@@ -1,0 +1,730 @@
+#include "dymesh/core/scenario.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <iterator>
+#include <limits>
+#include <span>
+#include <sstream>
+#include <string_view>
+#include <utility>
+
+#include "dymesh/core/units.h"
+
+namespace dymesh {
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kMaxSteps = 1e7;                          // most steps a scenario may ask for
+constexpr double kDefaultConversionHeight = 30.0 * units::kInch;  // [m] CRUSH_HEIGHT (spec §4)
+constexpr const char* kSurfaceKeys[kBodySurfaceCount] = {"front", "right", "back", "left", "top", "bottom"};
+
+// ---------------------------------------------------------------------------------------------
+// unit systems: SI value = input value * factor
+
+struct UnitScale {
+  bool us = false;
+  double length = 1.0;   // [m] per in | m
+  double speed = 1.0;    // [m/s] per mph | m/s
+  double mass = 1.0;     // [kg] per lb | kg
+  double weight = 1.0;   // [kg] per lb | N (weight -> mass)
+  double inertia = 1.0;  // [kg m^2] per lb in s^2 | kg m^2
+
+  // per-area (or per-width) stiffness with length exponent n: lb/in^n -> N/m^n
+  double StiffnessPow(int n) const { return us ? units::PoundPerInchPow(n) : 1.0; }
+};
+
+UnitScale ScaleFor(UnitSystem system) {
+  UnitScale s;
+  if (system == UnitSystem::kUS) {
+    s.us = true;
+    s.length = units::kInch;
+    s.speed = units::kMph;
+    s.mass = units::kPoundMass;
+    s.weight = units::kPoundMass;
+    s.inertia = units::kPoundForce * units::kInch;
+  } else {
+    s.weight = 1.0 / units::kStandardGravity;
+  }
+  return s;
+}
+
+// where values come from: the file named in messages, its folder, its units
+struct Source {
+  std::string file;
+  fs::path dir;
+  UnitScale units;
+};
+
+[[noreturn]] void Fail(const Source& src, const std::string& field, const std::string& message) {
+  throw InputError(src.file, field, message);
+}
+
+// ---------------------------------------------------------------------------------------------
+// JSON paths and value descriptions for messages
+
+std::string Join(const std::string& path, std::string_view key) {
+  return path.empty() ? std::string(key) : path + "." + std::string(key);
+}
+
+std::string At(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
+
+// name of the whole document in messages
+std::string FieldName(const std::string& path) { return path.empty() ? "(root)" : path; }
+
+std::string FormatDouble(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
+}
+
+// a short description of a JSON value for "got ..."
+std::string Describe(const Json& j) {
+  if (j.is_object()) return "an object";
+  if (j.is_array()) return "an array of " + std::to_string(j.size());
+  if (j.is_number_float()) return FormatDouble(j.get<double>());
+  std::string text = j.dump();
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// parsing: a DOM builder that knows the JSON path of every token, so that number overflow
+// (1e999) and duplicate keys are reported at their field
+
+class PathTrackingBuilder {
+ public:
+  explicit PathTrackingBuilder(Json* root) : root_(root) {}
+
+  bool null() { return Place(Json(nullptr)) != nullptr; }
+  bool boolean(bool v) { return Place(Json(v)) != nullptr; }
+  bool number_integer(Json::number_integer_t v) { return Place(Json(v)) != nullptr; }
+  bool number_unsigned(Json::number_unsigned_t v) { return Place(Json(v)) != nullptr; }
+  bool number_float(Json::number_float_t v, const std::string&) { return Place(Json(v)) != nullptr; }
+  bool string(std::string& v) { return Place(Json(v)) != nullptr; }
+  bool binary(Json::binary_t& v) { return Place(Json::binary(v)) != nullptr; }
+  bool start_object(std::size_t) { return Open(Json::object()); }
+  bool start_array(std::size_t) { return Open(Json::array()); }
+  bool end_object() { return Close(); }
+  bool end_array() { return Close(); }
+
+  bool key(std::string& k) {
+    // refuse duplicate keys (the JSON library would keep only the last one)
+    Frame& f = frames_.back();
+    if (f.value->contains(k)) {
+      f.key = k;
+      error_field_ = Path(false);
+      error_message_ = "duplicate key \"" + k + "\"";
+      return false;
+    }
+    f.key = k;
+    return true;
+  }
+
+  bool parse_error(std::size_t position, const std::string& token, const nlohmann::json::exception& ex) {
+    // number overflow is a non-finite value at a known field; anything else is malformed JSON
+    if (ex.id == 406) {
+      error_field_ = Path(true);
+      error_message_ = "expected a finite number, got " + token;
+      return false;
+    }
+    std::string what = ex.what();
+    const auto bracket = what.find("] ");
+    if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    error_field_ = "(json)";
+    error_message_ = "malformed JSON at byte " + std::to_string(position) + ": " + what;
+    return false;
+  }
+
+  const std::string& error_field() const { return error_field_; }
+  const std::string& error_message() const { return error_message_; }
+
+ private:
+  struct Frame {
+    Json* value;
+    std::string key;  // current key (objects)
+  };
+
+  // the value goes into the open container (or becomes the root)
+  Json* Place(Json&& v) {
+    if (frames_.empty()) {
+      *root_ = std::move(v);
+      return root_;
+    }
+    Frame& f = frames_.back();
+    if (f.value->is_array()) {
+      f.value->push_back(std::move(v));
+      return &f.value->back();
+    }
+    Json& slot = (*f.value)[f.key];
+    slot = std::move(v);
+    return &slot;
+  }
+
+  bool Open(Json&& container) {
+    Json* placed = Place(std::move(container));
+    frames_.push_back(Frame{placed, {}});
+    return true;
+  }
+
+  bool Close() {
+    frames_.pop_back();
+    return true;
+  }
+
+  // JSON path of the value being read (`next`: an array's next element rather than its last)
+  std::string Path(bool next) const {
+    std::string path;
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+      const Frame& f = frames_[i];
+      if (f.value->is_array()) {
+        const bool innermost = i + 1 == frames_.size();
+        const std::size_t n = f.value->size();
+        path = At(path, innermost && next ? n : (n == 0 ? 0 : n - 1));
+      } else {
+        path = Join(path, f.key);
+      }
+    }
+    return FieldName(path);
+  }
+
+  Json* root_;
+  std::vector<Frame> frames_;
+  std::string error_field_, error_message_;
+};
+
+Json ParseJson(const std::string& text, const std::string& file) {
+  Json root;
+  PathTrackingBuilder builder(&root);
+  const bool ok = Json::sax_parse(text, &builder);
+  if (!ok) throw InputError(file, builder.error_field(), builder.error_message());
+  return root;
+}
+
+std::string ReadTextFile(const fs::path& path, bool* ok) {
+  std::ifstream in(path, std::ios::binary);
+  *ok = static_cast<bool>(in);
+  if (!*ok) return {};
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// ---------------------------------------------------------------------------------------------
+// typed readers: each refuses a wrong type, a non-finite number or a value out of range,
+// naming the field and what was expected
+
+struct Range {
+  double lo, hi;
+  bool lo_open, hi_open;
+  const char* text;  // appended to "expected a number"
+
+  bool Contains(double v) const {
+    const bool above = lo_open ? v > lo : v >= lo;
+    const bool below = hi_open ? v < hi : v <= hi;
+    return above && below;
+  }
+};
+
+constexpr Range kAnyFinite{-kInfinity, kInfinity, false, false, ""};
+constexpr Range kPositive{0.0, kInfinity, true, false, " > 0"};
+constexpr Range kNonNegative{0.0, kInfinity, false, false, " >= 0"};
+constexpr Range kUnitInterval{0.0, 1.0, false, false, " in [0, 1]"};
+constexpr Range kUnitIntervalOpen{0.0, 1.0, false, true, " in [0, 1)"};
+
+const Json* Find(const Json& object, std::string_view key) {
+  const auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
+const Json& Require(const Source& src, const Json& object, const std::string& path, std::string_view key) {
+  const Json* j = Find(object, key);
+  if (j == nullptr) Fail(src, Join(path, key), "missing required key \"" + std::string(key) + "\"");
+  return *j;
+}
+
+void ExpectObject(const Source& src, const Json& j, const std::string& path) {
+  if (!j.is_object()) Fail(src, FieldName(path), "expected an object, got " + Describe(j));
+}
+
+// refuses keys outside `allowed`, listing the allowed ones
+void CheckKeys(const Source& src, const Json& object, const std::string& path, std::span<const std::string_view> allowed) {
+  for (const auto& item : object.items()) {
+    if (std::find(allowed.begin(), allowed.end(), item.key()) != allowed.end()) continue;
+    std::string list;
+    for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    Fail(src, Join(path, item.key()), "unknown key \"" + item.key() + "\"; allowed keys: " + list);
+  }
+}
+
+void CheckKeys(const Source& src, const Json& object, const std::string& path,
+               std::initializer_list<std::string_view> allowed) {
+  CheckKeys(src, object, path, std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+double ReadNumber(const Source& src, const Json& j, const std::string& path, const Range& range) {
+  const std::string expected = std::string("expected a number") + range.text;
+  if (!j.is_number()) Fail(src, path, expected + ", got " + Describe(j));
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) Fail(src, path, "expected a finite number, got " + FormatDouble(v));
+  if (!range.Contains(v)) Fail(src, path, expected + ", got " + Describe(j));
+  return v;
+}
+
+int ReadInt(const Source& src, const Json& j, const std::string& path, int lo, int hi, const std::string& expected) {
+  bool integral = j.is_number_integer() || j.is_number_unsigned();
+  if (j.is_number_float()) {
+    const double v = j.get<double>();
+    integral = std::isfinite(v) && std::floor(v) == v;
+  }
+  if (!integral) Fail(src, path, expected + ", got " + Describe(j));
+  const double v = j.get<double>();
+  if (v < lo || v > hi) Fail(src, path, expected + ", got " + Describe(j));
+  return static_cast<int>(v);
+}
+
+bool ReadBool(const Source& src, const Json& j, const std::string& path) {
+  if (!j.is_boolean()) Fail(src, path, "expected true or false, got " + Describe(j));
+  return j.get<bool>();
+}
+
+std::string ReadString(const Source& src, const Json& j, const std::string& path) {
+  if (!j.is_string()) Fail(src, path, "expected a string, got " + Describe(j));
+  return j.get<std::string>();
+}
+
+// one of a fixed set of strings, mapped to a value
+template <typename T>
+T ReadChoice(const Source& src, const Json& j, const std::string& path,
+             std::initializer_list<std::pair<std::string_view, T>> choices) {
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "\"" : ", \"") + std::string(c.first) + "\"";
+  if (j.is_string())
+    for (const auto& c : choices)
+      if (j.get<std::string>() == c.first) return c.second;
+  Fail(src, path, "expected one of " + list + ", got " + Describe(j));
+}
+
+// [x, y, z], each in range (raw input units)
+Vec3 ReadVec3(const Source& src, const Json& j, const std::string& path, const Range& range) {
+  if (!j.is_array() || j.size() != 3) Fail(src, path, "expected an array of 3 numbers, got " + Describe(j));
+  Vec3 v;
+  for (int i = 0; i < 3; ++i) v[i] = ReadNumber(src, j[i], At(path, i), range);
+  return v;
+}
+
+// a relative path resolved against the folder of the file that names it, made absolute
+std::string ResolvePath(const Source& src, const std::string& name) {
+  fs::path p(name);
+  if (p.is_relative()) p = src.dir / p;
+  std::error_code ec;
+  fs::path abs = fs::absolute(p, ec);
+  return (ec ? p : abs).lexically_normal().string();
+}
+
+fs::path FolderOf(const std::string& file) {
+  std::error_code ec;
+  if (file.empty()) return fs::current_path(ec);
+  const fs::path abs = fs::absolute(fs::path(file), ec);
+  return (ec ? fs::path(file) : abs).parent_path();
+}
+
+UnitSystem ReadUnits(const Source& src, const Json& j, const std::string& path) {
+  return ReadChoice<UnitSystem>(src, j, path, {{"US", UnitSystem::kUS}, {"SI", UnitSystem::kSI}});
+}
+
+// ---------------------------------------------------------------------------------------------
+// time and contact options
+
+void ParseTime(const Source& src, const Json& j, const std::string& path, Scenario* s) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path, {"step", "duration", "stop_at_separation"});
+  // step and duration in seconds in both unit systems
+  s->time_step = ReadNumber(src, Require(src, j, path, "step"), Join(path, "step"), kPositive);
+  s->duration = ReadNumber(src, Require(src, j, path, "duration"), Join(path, "duration"), kPositive);
+  if (s->duration / s->time_step > kMaxSteps)
+    Fail(src, Join(path, "duration"),
+         "expected at most 1e7 steps (duration / step), got " + FormatDouble(s->duration / s->time_step));
+  if (const Json* v = Find(j, "stop_at_separation")) s->stop_at_separation = ReadBool(src, *v, Join(path, "stop_at_separation"));
+}
+
+void ParseContact(const Source& src, const Json& j, const std::string& path, ContactOptions* o) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path,
+            {"passes_per_step", "search_direction", "specified_direction", "stop_rule", "version", "null_band",
+             "pushback_reduction", "pushback_reduce_limit", "toofar_margin", "toofar_maximum", "search_backoff",
+             "unload_begin", "unload_pot", "unload_stop", "max_grow_unload", "friction_null_band", "rebound_law",
+             "calc_nabor_interval"});
+  const double length = src.units.length;
+  // integers and choices
+  if (const Json* v = Find(j, "passes_per_step"))
+    o->passes_per_step = ReadInt(src, *v, Join(path, "passes_per_step"), 1, 1000, "expected an integer in 1..1000");
+  if (const Json* v = Find(j, "search_direction"))
+    o->search_direction = ReadChoice<SearchDirection>(src, *v, Join(path, "search_direction"),
+                                                      {{"local_average_normal", SearchDirection::kLocalAverageNormal},
+                                                       {"velocity", SearchDirection::kVelocity},
+                                                       {"poly_normal", SearchDirection::kPolyNormal},
+                                                       {"specified", SearchDirection::kSpecified}});
+  if (const Json* v = Find(j, "stop_rule"))
+    o->stop_rule = ReadChoice<StopRule>(src, *v, Join(path, "stop_rule"),
+                                        {{"after_one", StopRule::kAfterOne},
+                                         {"best_of_two", StopRule::kBestOfTwo},
+                                         {"best_of_all", StopRule::kBestOfAll}});
+  if (const Json* v = Find(j, "version")) {
+    o->version = ReadInt(src, *v, Join(path, "version"), 3, 4, "expected 3 or 4");
+  }
+  if (const Json* v = Find(j, "rebound_law"))
+    o->rebound_law = ReadChoice<ReboundLaw>(src, *v, Join(path, "rebound_law"),
+                                            {{"scaled", ReboundLaw::kScaled}, {"literal", ReboundLaw::kLiteral}});
+  if (const Json* v = Find(j, "calc_nabor_interval"))
+    o->calc_nabor_interval =
+        ReadInt(src, *v, Join(path, "calc_nabor_interval"), 1, 1000000, "expected an integer >= 1");
+  // the specified pushback direction, normalised
+  if (const Json* v = Find(j, "specified_direction")) {
+    const std::string field = Join(path, "specified_direction");
+    const Vec3 d = ReadVec3(src, *v, field, kAnyFinite);
+    if (!(d.norm() > 0.0)) Fail(src, field, "expected a nonzero vector, got [0, 0, 0]");
+    o->specified_direction = d.normalized();
+  }
+  // lengths (>= 0; the search depths > 0)
+  const std::pair<const char*, double*> lengths[] = {
+      {"null_band", &o->null_band},           {"pushback_reduce_limit", &o->pushback_reduce_limit},
+      {"toofar_margin", &o->toofar_margin},   {"unload_begin", &o->unload_begin},
+      {"unload_pot", &o->unload_pot},         {"unload_stop", &o->unload_stop},
+      {"max_grow_unload", &o->max_grow_unload}};
+  for (const auto& [key, target] : lengths)
+    if (const Json* v = Find(j, key)) *target = ReadNumber(src, *v, Join(path, key), kNonNegative) * length;
+  if (const Json* v = Find(j, "toofar_maximum"))
+    o->toofar_maximum = ReadNumber(src, *v, Join(path, "toofar_maximum"), kPositive) * length;
+  if (const Json* v = Find(j, "search_backoff"))
+    o->search_backoff = ReadNumber(src, *v, Join(path, "search_backoff"), kPositive) * length;
+  // fraction and speed
+  if (const Json* v = Find(j, "pushback_reduction"))
+    o->pushback_reduction = ReadNumber(src, *v, Join(path, "pushback_reduction"), kUnitIntervalOpen);
+  if (const Json* v = Find(j, "friction_null_band"))
+    o->friction_null_band = ReadNumber(src, *v, Join(path, "friction_null_band"), kNonNegative) * src.units.speed;
+}
+
+// ---------------------------------------------------------------------------------------------
+// mesh source
+
+std::array<std::string, 3> ReadAxes(const Source& src, const Json& j, const std::string& path) {
+  const std::string expected = "expected a permutation of x, y, z, each optionally negated (e.g. [\"x\", \"z\", \"-y\"])";
+  if (!j.is_array() || j.size() != 3) Fail(src, path, expected + ", got " + Describe(j));
+  std::array<std::string, 3> axes;
+  bool used[3] = {false, false, false};
+  for (int i = 0; i < 3; ++i) {
+    const std::string a = ReadString(src, j[i], At(path, i));
+    const std::string letter = (!a.empty() && a[0] == '-') ? a.substr(1) : a;
+    const int index = letter == "x" ? 0 : letter == "y" ? 1 : letter == "z" ? 2 : -1;
+    if (index < 0) Fail(src, At(path, i), "expected one of \"x\", \"-x\", \"y\", \"-y\", \"z\", \"-z\", got " + Describe(j[i]));
+    if (used[index]) Fail(src, path, expected + ", got " + j.dump());
+    used[index] = true;
+    axes[i] = a;
+  }
+  return axes;
+}
+
+void ParseBox(const Source& src, const Json& j, const std::string& path, MeshSource* mesh) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path, {"length", "width", "height", "segments"});
+  // sizes in the file's length unit
+  const char* keys[3] = {"length", "width", "height"};
+  for (int i = 0; i < 3; ++i)
+    mesh->box_size[i] = ReadNumber(src, Require(src, j, path, keys[i]), Join(path, keys[i]), kPositive) * src.units.length;
+  // grid segments along x, y, z
+  if (const Json* v = Find(j, "segments")) {
+    const std::string field = Join(path, "segments");
+    if (!v->is_array() || v->size() != 3) Fail(src, field, "expected an array of 3 integers >= 1, got " + Describe(*v));
+    for (int i = 0; i < 3; ++i)
+      mesh->box_segments[i] = ReadInt(src, (*v)[i], At(field, i), 1, 100000, "expected an integer in 1..100000");
+  }
+  mesh->box = true;
+}
+
+MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path, {"file", "unit", "scale", "axes", "fit_length", "subdivisions", "box"});
+  MeshSource mesh;
+  if (const Json* v = Find(j, "subdivisions"))
+    mesh.subdivisions = ReadInt(src, *v, Join(path, "subdivisions"), 0, 6, "expected an integer in 0..6");
+  // a generated box takes no file options
+  if (const Json* box = Find(j, "box")) {
+    for (const char* key : {"file", "unit", "scale", "axes", "fit_length"})
+      if (Find(j, key) != nullptr) Fail(src, Join(path, key), "not allowed together with \"box\"");
+    ParseBox(src, *box, Join(path, "box"), &mesh);
+    return mesh;
+  }
+  // a mesh file: must exist now, stored absolute
+  const Json* file = Find(j, "file");
+  if (file == nullptr) Fail(src, Join(path, "file"), "missing required key: give \"file\" or \"box\"");
+  const std::string field = Join(path, "file");
+  const std::string name = ReadString(src, *file, field);
+  if (name.empty()) Fail(src, field, "expected a file name, got \"\"");
+  mesh.file = ResolvePath(src, name);
+  std::error_code ec;
+  if (!fs::is_regular_file(mesh.file, ec)) Fail(src, field, "file not found: " + mesh.file);
+  // unit times scale: metres per file unit
+  double unit = 1.0;
+  if (const Json* v = Find(j, "unit"))
+    unit = ReadChoice<double>(src, *v, Join(path, "unit"),
+                              {{"m", 1.0}, {"mm", 1e-3}, {"cm", 1e-2}, {"in", units::kInch}, {"ft", units::kFoot}});
+  double scale = 1.0;
+  if (const Json* v = Find(j, "scale")) scale = ReadNumber(src, *v, Join(path, "scale"), kPositive);
+  mesh.scale = unit * scale;
+  // axes mapping and optional fitted length
+  if (const Json* v = Find(j, "axes")) mesh.axes = ReadAxes(src, *v, Join(path, "axes"));
+  if (const Json* v = Find(j, "fit_length"))
+    mesh.fit_length = ReadNumber(src, *v, Join(path, "fit_length"), kPositive) * src.units.length;
+  return mesh;
+}
+
+// ---------------------------------------------------------------------------------------------
+// stiffness
+
+// one surface: 2-D {A, B, conversion_height} or 3-D {A3, B3, C3, D3}, plus common keys
+Stiffness ParseSurfaceStiffness(const Source& src, const Json& j, const std::string& path) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path, {"A", "B", "conversion_height", "A3", "B3", "C3", "D3", "sat_crush", "max_crush", "Kv"});
+  const auto& u = src.units;
+  const bool has_2d = Find(j, "A") || Find(j, "B") || Find(j, "conversion_height");
+  const bool has_3d = Find(j, "A3") || Find(j, "B3") || Find(j, "C3") || Find(j, "D3");
+  if (has_2d && has_3d)
+    Fail(src, path, "mixes 2-D keys (A, B, conversion_height) with 3-D keys (A3, B3, C3, D3); use one form");
+  if (!has_2d && !has_3d)
+    Fail(src, path, "expected 2-D coefficients (A, B) or 3-D coefficients (A3, B3, C3, D3)");
+  auto number = [&](const char* key, const Range& range, double factor) {
+    const Json* v = Find(j, key);
+    return v == nullptr ? 0.0 : ReadNumber(src, *v, Join(path, key), range) * factor;
+  };
+  Stiffness k;
+  if (has_2d) {
+    // published 2-D coefficients per width, converted over the conversion height (Eq. 3)
+    const double a = number("A", kNonNegative, u.StiffnessPow(1));
+    const double b = number("B", kNonNegative, u.StiffnessPow(2));
+    double height = kDefaultConversionHeight;
+    if (const Json* v = Find(j, "conversion_height"))
+      height = ReadNumber(src, *v, Join(path, "conversion_height"), kPositive) * u.length;
+    k = StiffnessFrom2D(a, b, height);
+  } else {
+    // 3-D coefficients per area
+    k.A = number("A3", kNonNegative, u.StiffnessPow(2));
+    k.B = number("B3", kNonNegative, u.StiffnessPow(3));
+    k.C = number("C3", kAnyFinite, u.StiffnessPow(4));
+    k.D = number("D3", kAnyFinite, u.StiffnessPow(5));
+  }
+  // saturation, maximum crush and unloading slope
+  k.sat_crush = number("sat_crush", kNonNegative, u.length);
+  k.max_crush = number("max_crush", kNonNegative, u.length);
+  k.unload_slope = number("Kv", kNonNegative, u.StiffnessPow(3));
+  return k;
+}
+
+using SurfaceStiffness = std::array<std::optional<Stiffness>, kBodySurfaceCount>;
+
+// the stiffness object: named surfaces, "default" for the others it names not
+void ParseStiffnessSet(const Source& src, const Json& j, const std::string& path, SurfaceStiffness* out) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path, {"default", "front", "right", "back", "left", "top", "bottom"});
+  std::optional<Stiffness> fallback;
+  if (const Json* v = Find(j, "default")) fallback = ParseSurfaceStiffness(src, *v, Join(path, "default"));
+  for (int s = 0; s < kBodySurfaceCount; ++s) {
+    if (const Json* v = Find(j, kSurfaceKeys[s]))
+      (*out)[s] = ParseSurfaceStiffness(src, *v, Join(path, kSurfaceKeys[s]));
+    else if (fallback)
+      (*out)[s] = fallback;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// bodies: fields shared by vehicle files and scenario bodies, merged vehicle first
+
+struct BodyFields {
+  std::optional<MeshSource> mesh;
+  std::optional<double> mass;  // [kg] from mass or weight
+  std::optional<Vec3> cg;      // [m]
+  std::optional<Vec3> inertia; // [kg m^2]
+  std::optional<double> restitution, friction;
+  std::optional<bool> rigid;
+  std::optional<MotionModel> motion;
+  SurfaceStiffness stiffness;
+};
+
+// keys of BodyFields, as written
+constexpr std::array<std::string_view, 11> kVehicleKeys = {
+    "units", "mesh", "mass", "weight", "cg", "inertia", "restitution", "friction", "rigid", "motion", "stiffness"};
+constexpr std::array<std::string_view, 13> kBodyKeys = {
+    "name", "vehicle", "mesh", "mass", "weight", "cg", "inertia", "restitution", "friction", "rigid", "motion",
+    "stiffness", "initial"};
+
+BodyFields ParseBodyFields(const Source& src, const Json& j, const std::string& path) {
+  const auto& u = src.units;
+  BodyFields b;
+  if (const Json* v = Find(j, "mesh")) b.mesh = ParseMesh(src, *v, Join(path, "mesh"));
+  // mass or weight (not both)
+  const Json* mass = Find(j, "mass");
+  const Json* weight = Find(j, "weight");
+  if (mass != nullptr && weight != nullptr) Fail(src, Join(path, "weight"), "give either mass or weight, not both");
+  if (mass != nullptr) b.mass = ReadNumber(src, *mass, Join(path, "mass"), kPositive) * u.mass;
+  if (weight != nullptr) b.mass = ReadNumber(src, *weight, Join(path, "weight"), kPositive) * u.weight;
+  // mass properties
+  if (const Json* v = Find(j, "cg")) b.cg = ReadVec3(src, *v, Join(path, "cg"), kAnyFinite) * u.length;
+  if (const Json* v = Find(j, "inertia")) b.inertia = ReadVec3(src, *v, Join(path, "inertia"), kPositive) * u.inertia;
+  // contact properties
+  if (const Json* v = Find(j, "restitution")) b.restitution = ReadNumber(src, *v, Join(path, "restitution"), kUnitInterval);
+  if (const Json* v = Find(j, "friction")) b.friction = ReadNumber(src, *v, Join(path, "friction"), kNonNegative);
+  if (const Json* v = Find(j, "rigid")) b.rigid = ReadBool(src, *v, Join(path, "rigid"));
+  if (const Json* v = Find(j, "motion"))
+    b.motion = ReadChoice<MotionModel>(src, *v, Join(path, "motion"),
+                                       {{"planar", MotionModel::kPlanar},
+                                        {"free", MotionModel::kFree6Dof},
+                                        {"gravity", MotionModel::kGravityGround},
+                                        {"fixed", MotionModel::kFixed}});
+  if (const Json* v = Find(j, "stiffness")) ParseStiffnessSet(src, *v, Join(path, "stiffness"), &b.stiffness);
+  return b;
+}
+
+// `over` wins wherever it says something
+BodyFields Merge(const BodyFields& base, const BodyFields& over) {
+  BodyFields m = base;
+  if (over.mesh) m.mesh = over.mesh;
+  if (over.mass) m.mass = over.mass;
+  if (over.cg) m.cg = over.cg;
+  if (over.inertia) m.inertia = over.inertia;
+  if (over.restitution) m.restitution = over.restitution;
+  if (over.friction) m.friction = over.friction;
+  if (over.rigid) m.rigid = over.rigid;
+  if (over.motion) m.motion = over.motion;
+  for (int s = 0; s < kBodySurfaceCount; ++s)
+    if (over.stiffness[s]) m.stiffness[s] = over.stiffness[s];
+  return m;
+}
+
+// a vehicle definition file: its own units, its own paths, errors name it
+BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string& path) {
+  const std::string name = ReadString(scenario, j, path);
+  const std::string file = ResolvePath(scenario, name);
+  bool ok = false;
+  const std::string text = ReadTextFile(file, &ok);
+  if (!ok) Fail(scenario, path, "cannot open vehicle file: " + file);
+  const Json root = ParseJson(text, file);
+  Source src{file, fs::path(file).parent_path(), {}};
+  ExpectObject(src, root, "");
+  CheckKeys(src, root, "", kVehicleKeys);
+  src.units = ScaleFor(ReadUnits(src, Require(src, root, "", "units"), "units"));
+  return ParseBodyFields(src, root, "");
+}
+
+// initial pose and velocities (earth frame, SAE)
+RigidState ParseInitial(const Source& src, const Json& j, const std::string& path) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path, {"position", "heading", "roll", "pitch", "velocity", "speed", "yaw_rate"});
+  const auto& u = src.units;
+  RigidState r;
+  r.position = ReadVec3(src, Require(src, j, path, "position"), Join(path, "position"), kAnyFinite) * u.length;
+  // Euler angles in degrees
+  auto angle = [&](const char* key) {
+    const Json* v = Find(j, key);
+    return v == nullptr ? 0.0 : ReadNumber(src, *v, Join(path, key), kAnyFinite) * units::kDegree;
+  };
+  r.yaw = angle("heading");
+  r.roll = angle("roll");
+  r.pitch = angle("pitch");
+  // velocity vector, or speed along the heading
+  const Json* velocity = Find(j, "velocity");
+  const Json* speed = Find(j, "speed");
+  if (velocity != nullptr && speed != nullptr) Fail(src, Join(path, "speed"), "give either velocity or speed, not both");
+  if (velocity != nullptr) r.velocity = ReadVec3(src, *velocity, Join(path, "velocity"), kAnyFinite) * u.speed;
+  if (speed != nullptr) {
+    const double v = ReadNumber(src, *speed, Join(path, "speed"), kAnyFinite) * u.speed;
+    r.velocity = Vec3(v * std::cos(r.yaw), v * std::sin(r.yaw), 0.0);
+  }
+  // yaw rate to body rates (p, q, r) with zero roll and pitch rates
+  const double psi_dot = angle("yaw_rate");
+  r.omega = Vec3(-std::sin(r.pitch), std::sin(r.roll) * std::cos(r.pitch), std::cos(r.roll) * std::cos(r.pitch)) * psi_dot;
+  return r;
+}
+
+BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path, kBodyKeys);
+  BodySpec body;
+  body.name = ReadString(src, Require(src, j, path, "name"), Join(path, "name"));
+  if (body.name.empty()) Fail(src, Join(path, "name"), "expected a non-empty string, got \"\"");
+  // vehicle file first, then this body's own fields
+  BodyFields fields;
+  if (const Json* v = Find(j, "vehicle")) fields = LoadVehicle(src, *v, Join(path, "vehicle"));
+  fields = Merge(fields, ParseBodyFields(src, j, path));
+  body.initial = ParseInitial(src, Require(src, j, path, "initial"), Join(path, "initial"));
+  // geometry is required
+  if (!fields.mesh) Fail(src, Join(path, "mesh"), "missing required key \"mesh\" (in the body or its vehicle file)");
+  body.mesh = *fields.mesh;
+  // motion, then mass (only a fixed body may go without)
+  body.motion = fields.motion.value_or(MotionModel::kPlanar);
+  if (!fields.mass && body.motion != MotionModel::kFixed)
+    Fail(src, Join(path, "mass"), "missing: give mass or weight (only a body with motion \"fixed\" may omit both)");
+  body.mass = fields.mass.value_or(0.0);
+  body.cg = fields.cg;
+  body.inertia_diagonal = fields.inertia;
+  body.restitution = fields.restitution.value_or(0.0);
+  body.friction = fields.friction.value_or(0.0);
+  body.rigid = fields.rigid.value_or(false);
+  // stiffness: a deformable body needs A or B on every surface
+  for (int s = 0; s < kBodySurfaceCount; ++s) {
+    body.stiffness[s] = fields.stiffness[s].value_or(Stiffness{});
+    const Stiffness& k = body.stiffness[s];
+    if (!body.rigid && !(k.A > 0.0 || k.B > 0.0))
+      Fail(src, Join(path, "stiffness"),
+           std::string("a deformable body needs A > 0 or B > 0 on every surface; \"") + kSurfaceKeys[s] +
+               "\" has none (give it, or \"default\", or set \"rigid\": true)");
+  }
+  return body;
+}
+
+}  // namespace
+
+Scenario ParseScenario(const std::string& json_text, const std::string& file) {
+  const Json root = ParseJson(json_text, file);
+  Source src{file, FolderOf(file), {}};
+  ExpectObject(src, root, "");
+  CheckKeys(src, root, "", {"name", "units", "time", "contact", "bodies"});
+  Scenario s;
+  s.file = file;
+  // units first: every other number depends on them
+  s.units = ReadUnits(src, Require(src, root, "", "units"), "units");
+  src.units = ScaleFor(s.units);
+  if (const Json* v = Find(root, "name")) s.name = ReadString(src, *v, "name");
+  ParseTime(src, Require(src, root, "", "time"), "time", &s);
+  if (const Json* v = Find(root, "contact")) ParseContact(src, *v, "contact", &s.contact);
+  // bodies: at least two, unique names
+  const Json& bodies = Require(src, root, "", "bodies");
+  if (!bodies.is_array() || bodies.size() < 2)
+    Fail(src, "bodies", "expected an array of at least 2 bodies, got " + Describe(bodies));
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    BodySpec body = ParseBody(src, bodies[i], At("bodies", i));
+    for (const BodySpec& earlier : s.bodies)
+      if (earlier.name == body.name) Fail(src, Join(At("bodies", i), "name"), "duplicate body name \"" + body.name + "\"");
+    s.bodies.push_back(std::move(body));
+  }
+  return s;
+}
+
+Scenario LoadScenario(const std::string& path) {
+  bool ok = false;
+  const std::string text = ReadTextFile(path, &ok);
+  if (!ok) throw InputError(path, "(file)", "cannot open: " + path);
+  return ParseScenario(text, path);
+}
+
+}  // namespace dymesh

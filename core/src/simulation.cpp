@@ -1,0 +1,105 @@
+#include "dymesh/core/simulation.h"
+
+#include <cmath>
+
+#include "dymesh/core/mesh_import.h"
+
+namespace dymesh {
+namespace {
+
+// a body with no collision load for this long after contact has separated
+constexpr double kSeparationWindow = 0.02;  // [s]
+
+// solid box of the mesh bounds: the inertia used when a scenario gives none
+Mat3 BoxInertia(double mass, const Vec3& size) {
+  const Vec3 sq = size.cwiseProduct(size);
+  return Vec3(sq.y() + sq.z(), sq.x() + sq.z(), sq.x() + sq.y()).asDiagonal() * (mass / 12.0);
+}
+
+}  // namespace
+
+std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario) {
+  std::vector<std::shared_ptr<const BodyModel>> models;
+  for (size_t i = 0; i < scenario.bodies.size(); ++i) {
+    const BodySpec& b = scenario.bodies[i];
+    // mesh in body axes, moved so the CG (given, or the bounds centre) is the origin
+    TriMesh mesh = BuildBodyMesh(b.mesh, scenario.file, "bodies[" + std::to_string(i) + "].mesh");
+    const MeshStats stats = ComputeStats(mesh);
+    const Vec3 cg = b.cg.value_or(0.5 * (stats.min + stats.max));
+    for (Vec3& p : mesh.vertices) p -= cg;
+    const Mat3 inertia = b.inertia_diagonal ? Mat3(b.inertia_diagonal->asDiagonal())
+                                            : BoxInertia(b.mass, stats.max - stats.min);
+    models.push_back(std::make_shared<const BodyModel>(MakeBodyModel(
+        b.name, std::move(mesh), b.stiffness, b.mass, inertia, b.restitution, b.friction, b.rigid)));
+  }
+  return models;
+}
+
+Simulation::Simulation(const Scenario& scenario, const LocatorFactory& make_locator) : scenario_(scenario) {
+  std::vector<RigidState> initial;
+  for (const BodySpec& b : scenario_.bodies) {
+    initial.push_back(b.initial);
+    rest_height_.push_back(b.initial.position.z());
+  }
+  engine_ = std::make_unique<ContactEngine>(BuildBodyModels(scenario_), initial, scenario_.contact, make_locator);
+  Record(nullptr);
+}
+
+void Simulation::Run(const std::function<void(double)>& on_step) {
+  while (Advance()) {
+    if (on_step) on_step(time_);
+  }
+}
+
+bool Simulation::Advance() {
+  if (finished_) return false;
+  const double dt = scenario_.time_step;
+  // contact step at the current poses, then the rigid-body host integrates every body
+  const StepResult step = engine_->Step(dt);
+  bool in_contact = false;
+  for (int i = 0; i < engine_->body_count(); ++i) {
+    const BodyModel& model = engine_->model(i);
+    const MotionModel motion = scenario_.bodies[i].motion;
+    RigidState rigid = engine_->state(i).rigid;
+    const ExternalLoads extra = MotionModelLoads(motion, model, rigid, rest_height_[i]);
+    const CgLoads& loads = step.loads[i];
+    IntegrateRigidBody(model, motion, loads.force_earth + extra.force_earth, loads.moment_body + extra.moment_body,
+                       dt, &rigid);
+    engine_->SetRigidState(i, rigid);
+    in_contact = in_contact || loads.force_earth.squaredNorm() > 0.0;
+  }
+  diagnostics_.Add(step.diagnostics);
+  ++steps_;
+  time_ = steps_ * dt;
+  if (in_contact) {
+    if (first_contact_time_ < 0.0) first_contact_time_ = time_ - dt;
+    last_contact_time_ = time_;
+  }
+  Record(&step);
+  // stop at the duration, or once contact has been over for the separation window
+  const bool separated = scenario_.stop_at_separation && last_contact_time_ >= 0.0 &&
+                         time_ - last_contact_time_ >= kSeparationWindow;
+  finished_ = time_ >= scenario_.duration - 0.5 * dt || separated;
+  return !finished_;
+}
+
+void Simulation::Record(const StepResult* step) {
+  Sample sample;
+  sample.time = time_;
+  for (int i = 0; i < engine_->body_count(); ++i) {
+    const BodyState& s = engine_->state(i);
+    BodySample b;
+    b.rigid = s.rigid;
+    if (step) {
+      b.loads = step->loads[i];
+      const double mass = engine_->model(i).mass;
+      if (mass > 0.0) b.accel_body = b.loads.force_body / mass;
+    }
+    b.crush_energy = s.crush_energy;
+    b.friction_energy = s.friction_energy;
+    sample.bodies.push_back(b);
+  }
+  history_.push_back(std::move(sample));
+}
+
+}  // namespace dymesh

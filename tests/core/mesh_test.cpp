@@ -1,0 +1,296 @@
+// Mesh storage, welding, adjacency, subdivision, the box generator, checks and mesh file I/O.
+#include "dymesh/core/mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "dymesh/core/mesh_import.h"
+
+namespace dymesh {
+namespace {
+
+namespace fs = std::filesystem;
+
+double SurfaceArea(const TriMesh& mesh) {
+  double area = 0.0;
+  for (const auto& t : mesh.triangles)
+    area += 0.5 * TriangleCross(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]).norm();
+  return area;
+}
+
+// a fresh folder for this test's files
+fs::path TempFolder() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::temp_directory_path() / ("dymesh_mesh_test_" + std::string(info->name()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void WriteText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+TEST(MakeBox, VolumeBoundsAndCounts) {
+  const TriMesh box = MakeBox(2.0, 3.0, 4.0, 2, 3, 4);
+  // V = 2 (nx ny + ny nz + nz nx) + 2, T = 4 (nx ny + ny nz + nz nx)
+  const MeshStats s = ComputeStats(box);
+  EXPECT_EQ(s.vertices, 54);
+  EXPECT_EQ(s.triangles, 104);
+  EXPECT_NEAR(SignedVolume(box), 24.0, 1e-12);
+  EXPECT_NEAR(SurfaceArea(box), 2 * (6.0 + 12.0 + 8.0), 1e-12);
+  EXPECT_EQ(s.min, Vec3(-1.0, -1.5, -2.0));
+  EXPECT_EQ(s.max, Vec3(1.0, 1.5, 2.0));
+}
+
+TEST(MakeBox, ClosedManifoldAndOutward) {
+  const TriMesh box = MakeBox(4.572, 1.6764, 0.762, 5, 3, 2);
+  const MeshStats s = ComputeStats(box);
+  EXPECT_EQ(s.open_edges, 0);
+  EXPECT_EQ(s.nonmanifold_edges, 0);
+  EXPECT_EQ(s.degenerate_triangles, 0);
+  EXPECT_NEAR(SignedVolume(box), 4.572 * 1.6764 * 0.762, 1e-12);
+  // every triangle's normal points away from the centre
+  for (const auto& t : box.triangles) {
+    const Vec3& a = box.vertices[t[0]];
+    const Vec3 n = TriangleCross(a, box.vertices[t[1]], box.vertices[t[2]]);
+    EXPECT_GT(n.dot((a + box.vertices[t[1]] + box.vertices[t[2]]) / 3.0), 0.0);
+  }
+  // Euler characteristic of a sphere: V - E + F = 2, with E = 3F/2 on a closed mesh
+  EXPECT_EQ(s.vertices - 3 * s.triangles / 2 + s.triangles, 2);
+}
+
+TEST(MakeBox, SingleSegmentAndRefusals) {
+  const TriMesh box = MakeBox(1.0, 1.0, 1.0, 1, 1, 1);
+  EXPECT_EQ(box.vertices.size(), 8u);
+  EXPECT_EQ(box.triangles.size(), 12u);
+  EXPECT_THROW(MakeBox(0.0, 1.0, 1.0, 1, 1, 1), std::invalid_argument);
+  EXPECT_THROW(MakeBox(1.0, 1.0, 1.0, 0, 1, 1), std::invalid_argument);
+}
+
+TEST(Subdivide, KeepsAreaVolumeAndClosedness) {
+  const TriMesh box = MakeBox(2.0, 1.0, 0.5, 2, 1, 1);
+  const MeshStats before = ComputeStats(box);
+  const TriMesh fine = Subdivide(box);
+  const MeshStats after = ComputeStats(fine);
+  EXPECT_EQ(after.triangles, 4 * before.triangles);
+  // one new vertex per edge (E = 3T/2 on a closed mesh)
+  EXPECT_EQ(after.vertices, before.vertices + 3 * before.triangles / 2);
+  EXPECT_NEAR(SurfaceArea(fine), SurfaceArea(box), 1e-12);
+  EXPECT_NEAR(SignedVolume(fine), 1.0, 1e-12);
+  EXPECT_EQ(after.open_edges, 0);
+  EXPECT_EQ(after.nonmanifold_edges, 0);
+  // twice: still closed, 16 times the triangles
+  const TriMesh finer = Subdivide(fine);
+  EXPECT_EQ(ComputeStats(finer).triangles, 16 * before.triangles);
+  EXPECT_EQ(ComputeStats(finer).open_edges, 0);
+}
+
+TEST(Subdivide, KeepsWinding) {
+  TriMesh tri;
+  tri.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  tri.triangles = {{0, 1, 2}};
+  const TriMesh fine = Subdivide(tri);
+  ASSERT_EQ(fine.triangles.size(), 4u);
+  for (const auto& t : fine.triangles)
+    EXPECT_GT(TriangleCross(fine.vertices[t[0]], fine.vertices[t[1]], fine.vertices[t[2]]).z(), 0.0);
+}
+
+TEST(Weld, MergesDuplicatesInStableOrder) {
+  // two triangles of a square, each with its own copy of the shared edge
+  TriMesh soup;
+  soup.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  soup.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const TriMesh welded = Weld(soup, 1e-9);
+  ASSERT_EQ(welded.vertices.size(), 4u);
+  EXPECT_EQ(welded.vertices[3], Vec3(0, 1, 0));
+  ASSERT_EQ(welded.triangles.size(), 2u);
+  EXPECT_EQ(welded.triangles[0], (std::array<int, 3>{0, 1, 2}));
+  EXPECT_EQ(welded.triangles[1], (std::array<int, 3>{0, 2, 3}));
+  EXPECT_EQ(ComputeStats(welded).open_edges, 4);
+}
+
+TEST(Weld, ToleranceDecidesAndCollapsedTrianglesGo) {
+  TriMesh soup;
+  soup.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1e-7, 0, 0), Vec3(1, 1e-3, 0)};
+  soup.triangles = {{0, 1, 2}, {3, 1, 4}};
+  // within 1e-6: vertex 3 joins vertex 0; vertex 4 stays (1e-3 away)
+  const TriMesh loose = Weld(soup, 1e-6);
+  EXPECT_EQ(loose.vertices.size(), 4u);
+  EXPECT_EQ(loose.triangles.size(), 2u);
+  // within 1e-2: vertex 4 joins vertex 1, so the second triangle collapses
+  const TriMesh coarse = Weld(soup, 1e-2);
+  EXPECT_EQ(coarse.vertices.size(), 3u);
+  EXPECT_EQ(coarse.triangles.size(), 1u);
+  // tolerance 0: only identical positions merge
+  EXPECT_EQ(Weld(soup, 0.0).vertices.size(), 5u);
+}
+
+TEST(Weld, BoxMadeOfSeparateFacesWeldsClosed) {
+  // the box's faces as separate pieces (every vertex duplicated per triangle) weld back
+  const TriMesh box = MakeBox(1.0, 2.0, 3.0, 2, 2, 2);
+  TriMesh soup;
+  for (const auto& t : box.triangles) {
+    const int base = static_cast<int>(soup.vertices.size());
+    for (int v : t) soup.vertices.push_back(box.vertices[v]);
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  const TriMesh welded = Weld(soup, 1e-9);
+  EXPECT_EQ(welded.vertices.size(), box.vertices.size());
+  EXPECT_EQ(ComputeStats(welded).open_edges, 0);
+}
+
+TEST(RemoveDegenerateTriangles, RepeatedIndexAndZeroArea) {
+  TriMesh mesh;
+  mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0)};
+  mesh.triangles = {{0, 1, 2}, {0, 0, 1}, {0, 1, 3}, {1, 2, 0}};
+  EXPECT_EQ(ComputeStats(mesh).degenerate_triangles, 2);
+  EXPECT_EQ(RemoveDegenerateTriangles(&mesh), 2);
+  ASSERT_EQ(mesh.triangles.size(), 2u);
+  EXPECT_EQ(mesh.triangles[0], (std::array<int, 3>{0, 1, 2}));
+  EXPECT_EQ(mesh.triangles[1], (std::array<int, 3>{1, 2, 0}));
+  EXPECT_EQ(mesh.vertices.size(), 4u);
+}
+
+TEST(BuildVertexTriangles, CsrListsEveryUse) {
+  const TriMesh box = MakeBox(1.0, 1.0, 1.0, 2, 1, 1);
+  const VertexTriangles adj = BuildVertexTriangles(box);
+  ASSERT_EQ(adj.offsets.size(), box.vertices.size() + 1);
+  EXPECT_EQ(adj.offsets.back(), static_cast<int>(3 * box.triangles.size()));
+  for (int v = 0; v < static_cast<int>(box.vertices.size()); ++v) {
+    for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
+      const auto& t = box.triangles[adj.ids[k]];
+      EXPECT_TRUE(t[0] == v || t[1] == v || t[2] == v);
+      if (k > adj.offsets[v]) EXPECT_LT(adj.ids[k - 1], adj.ids[k]);
+    }
+  }
+}
+
+TEST(FlipWinding, NegatesVolume) {
+  TriMesh box = MakeBox(1.0, 2.0, 3.0, 1, 1, 1);
+  FlipWinding(&box);
+  EXPECT_NEAR(SignedVolume(box), -6.0, 1e-12);
+}
+
+TEST(MeshFiles, WriteObjThenLoadRoundTrip) {
+  const fs::path dir = TempFolder();
+  const TriMesh box = MakeBox(1.5, 0.5, 0.25, 3, 1, 1);
+  const std::string path = (dir / "box.obj").string();
+  WriteObj(box, path, "test box\nsecond line");
+  EXPECT_FALSE(fs::exists(path + ".tmp"));
+  const TriMesh loaded = LoadMeshFile(path, "mesh.file");
+  EXPECT_EQ(loaded.vertices.size(), box.vertices.size());
+  EXPECT_EQ(loaded.triangles.size(), box.triangles.size());
+  EXPECT_NEAR(SignedVolume(loaded), 1.5 * 0.5 * 0.25, 1e-8);
+  EXPECT_EQ(ComputeStats(loaded).open_edges, 0);
+}
+
+TEST(MeshFiles, WriteObjToMissingFolderThrows) {
+  const fs::path dir = TempFolder();
+  EXPECT_THROW(WriteObj(MakeBox(1, 1, 1, 1, 1, 1), (dir / "no" / "such" / "x.obj").string(), ""), std::runtime_error);
+}
+
+TEST(MeshFiles, LoadRefusesMissingAndGarbage) {
+  const fs::path dir = TempFolder();
+  const std::string missing = (dir / "missing.obj").string();
+  try {
+    LoadMeshFile(missing, "bodies[0].mesh.file");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), missing);
+    EXPECT_EQ(e.field(), "bodies[0].mesh.file");
+  }
+  const std::string garbage = (dir / "garbage.obj").string();
+  WriteText(garbage, "this is not a mesh\nf 7 8 9\n");
+  try {
+    LoadMeshFile(garbage, "bodies[0].mesh.file");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), garbage);
+    EXPECT_EQ(e.field(), "bodies[0].mesh.file");
+  }
+}
+
+TEST(BuildBodyMesh, MapsAxesScalesAndFits) {
+  const fs::path dir = TempFolder();
+  const std::string path = (dir / "yup.obj").string();
+  // a y-up box: 4 long (x), 1 tall (y), 2 wide (z), in mm
+  WriteObj(MakeBox(4000.0, 1000.0, 2000.0, 2, 1, 1), path, "y-up box");
+  MeshSource source;
+  source.file = path;
+  source.scale = 1e-3;
+  source.axes = {"x", "z", "-y"};
+  const TriMesh body = BuildBodyMesh(source, "(test)", "bodies[0].mesh");
+  const MeshStats s = ComputeStats(body);
+  EXPECT_NEAR(s.max.x() - s.min.x(), 4.0, 1e-9);
+  EXPECT_NEAR(s.max.y() - s.min.y(), 2.0, 1e-9);
+  EXPECT_NEAR(s.max.z() - s.min.z(), 1.0, 1e-9);
+  EXPECT_NEAR(SignedVolume(body), 8.0, 1e-8);
+  // fit the body-x extent to 5 m (uniform)
+  source.fit_length = 5.0;
+  const MeshStats fitted = ComputeStats(BuildBodyMesh(source, "(test)", "bodies[0].mesh"));
+  EXPECT_NEAR(fitted.max.x() - fitted.min.x(), 5.0, 1e-9);
+  EXPECT_NEAR(fitted.max.y() - fitted.min.y(), 2.5, 1e-9);
+  // one subdivision: four times the triangles
+  source.fit_length.reset();
+  source.subdivisions = 1;
+  EXPECT_EQ(BuildBodyMesh(source, "(test)", "bodies[0].mesh").triangles.size(), 4 * body.triangles.size());
+}
+
+TEST(BuildBodyMesh, OrientsInwardMeshOutward) {
+  const fs::path dir = TempFolder();
+  TriMesh inward = MakeBox(1.0, 1.0, 1.0, 1, 1, 1);
+  FlipWinding(&inward);
+  const std::string path = (dir / "inward.obj").string();
+  WriteObj(inward, path, "inward box");
+  MeshSource source;
+  source.file = path;
+  EXPECT_NEAR(SignedVolume(BuildBodyMesh(source, "(test)", "m")), 1.0, 1e-9);
+  // an improper mapping (a mirror) also ends outward
+  source.axes = {"-x", "y", "z"};
+  EXPECT_NEAR(SignedVolume(BuildBodyMesh(source, "(test)", "m")), 1.0, 1e-9);
+}
+
+TEST(BuildBodyMesh, BoxAndRefusedAxes) {
+  MeshSource box;
+  box.box = true;
+  box.box_size = Vec3(4.0, 2.0, 1.0);
+  box.box_segments = {4, 2, 1};
+  EXPECT_NEAR(SignedVolume(BuildBodyMesh(box, "(test)", "m")), 8.0, 1e-12);
+  MeshSource bad;
+  bad.file = "/nonexistent.obj";
+  bad.axes = {"x", "x", "z"};
+  try {
+    BuildBodyMesh(bad, "scenario.json", "bodies[1].mesh");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "scenario.json");
+    EXPECT_EQ(e.field(), "bodies[1].mesh.axes");
+  }
+}
+
+TEST(ReferenceMeshes, LoadAndOrient) {
+  // the repository's vehicle meshes load, with the documented body-axes mapping
+  for (const char* name : {"torcs_p406.obj", "torcs_p406-lod3.obj", "torcs_car1-stock1.obj", "cesium_milk_truck.obj"}) {
+    MeshSource source;
+    source.file = std::string(DYMESH_DATA_DIR) + "/meshes/" + name;
+    source.axes = {"x", "z", "-y"};
+    const TriMesh body = BuildBodyMesh(source, "(test)", "m");
+    const MeshStats s = ComputeStats(body);
+    EXPECT_GT(s.triangles, 1000) << name;
+    EXPECT_GT(SignedVolume(body), 0.0) << name;
+    // SAE body axes: longer than wide, roof at negative z, ground near z = 0
+    EXPECT_GT(s.max.x() - s.min.x(), s.max.y() - s.min.y()) << name;
+    EXPECT_LT(s.min.z(), -1.0) << name;
+    EXPECT_NEAR(s.max.z(), 0.0, 0.01) << name;
+  }
+}
+
+}  // namespace
+}  // namespace dymesh

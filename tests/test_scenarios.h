@@ -1,0 +1,58 @@
+#pragma once
+// Scenarios built in code for the validation tests (US inputs converted to SI here).
+#include <string>
+
+#include "dymesh/core/scenario.h"
+#include "dymesh/core/units.h"
+
+namespace dymesh::testing {
+
+namespace u = dymesh::units;
+
+// a box-fronted deformable body: length x width x height [in], grid segments, weight [lb],
+// 2-D stiffness A [lb/in], B [lb/in^2] on every surface with conversion height H [in]
+inline BodySpec BoxVehicle(const std::string& name, double length, double width, double height,
+                           std::array<int, 3> segments, double weight_lb, double a, double b, double h,
+                           double restitution) {
+  BodySpec body;
+  body.name = name;
+  body.mesh.box = true;
+  body.mesh.box_size = Vec3(length, width, height) * u::kInch;
+  body.mesh.box_segments = segments;
+  body.mass = weight_lb * u::kPoundMass;
+  const Stiffness k = StiffnessFrom2D(a * u::PoundPerInchPow(1), b * u::PoundPerInchPow(2), h * u::kInch);
+  body.stiffness.fill(k);
+  body.restitution = restitution;
+  body.motion = MotionModel::kPlanar;
+  return body;
+}
+
+// a rigid fixed wall whose face (normal -x) is at x = face_x [in]
+inline BodySpec RigidWall(double face_x_in) {
+  BodySpec wall;
+  wall.name = "wall";
+  wall.mesh.box = true;
+  wall.mesh.box_size = Vec3(40, 400, 100) * u::kInch;
+  wall.mesh.box_segments = {1, 4, 2};
+  wall.rigid = true;
+  wall.motion = MotionModel::kFixed;
+  wall.initial.position = Vec3(face_x_in + 20.0, 0, 0) * u::kInch;
+  return wall;
+}
+
+// spec §4 test case: 66 in wide, 30 in high, 3000 lb, A = 300 lb/in, B = 100 lb/in^2, H = 30 in,
+// at `speed_mph` into a rigid wall 0.5 in ahead of its front face
+inline Scenario BarrierScenario(double speed_mph, double restitution, double time_step) {
+  Scenario s;
+  s.file = "(barrier test)";
+  s.units = UnitSystem::kUS;
+  s.time_step = time_step;
+  s.duration = 0.4;
+  s.contact.search_direction = SearchDirection::kVelocity;
+  BodySpec car = BoxVehicle("box", 180, 66, 30, {1, 22, 10}, 3000, 300, 100, 30, restitution);
+  car.initial.velocity = Vec3(speed_mph * u::kMph, 0, 0);
+  s.bodies = {car, RigidWall(90.5)};
+  return s;
+}
+
+}  // namespace dymesh::testing
