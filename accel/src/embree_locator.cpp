@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -30,6 +31,8 @@ bool CollectNearPrimitive(RTCPointQueryFunctionArguments* args) {
   return false;
 }
 
+constexpr double kEdgeOffset = 1e-5;  // [m] offset of the retry rays, ~30 float ulps at 5 m
+
 std::string DefaultConfig() {
   // determinism: a pinned ISA, so BVH layout and hits do not depend on the machine's vector width
   return __builtin_cpu_supports("avx2") ? "isa=avx2" : "isa=sse4.2";
@@ -46,7 +49,8 @@ EmbreeDevice::EmbreeDevice(const std::string& config) {
 EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(static_cast<RTCDevice>(device_)); }
 
 EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const TriMesh& mesh)
-    : device_(std::move(device)), vertex_count_(mesh.vertices.size()), triangles_(mesh.triangles) {
+    : device_(std::move(device)), vertex_count_(mesh.vertices.size()), triangles_(mesh.triangles),
+      ring_(BuildVertexTriangles(mesh)) {
   // a deformable scene: DYNAMIC + LOW quality so Update refits, ROBUST so shared edges do not leak
   RTCScene scene = rtcNewScene(Dev(*device_));
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
@@ -89,28 +93,51 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices) {
   rtcCommitScene(static_cast<RTCScene>(scene_));
 }
 
-void EmbreeLocator::TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, double length,
-                                          std::vector<int>* out) const {
-  // the float segment is stretched a little at both ends; the exact test trims it again
-  const double slack = 1e-4 * (1.0 + length);
-  const Vec3 o = origin - slack * dir;
+void EmbreeLocator::CollectAlongSegment(const Vec3& origin, const Vec3& dir, double length,
+                                        std::vector<int>* out) const {
   CollectContext ctx;
   rtcInitIntersectContext(&ctx.base);
   ctx.base.filter = CollectAllHits;
   ctx.out = out;
   RTCRayHit rh;
   std::memset(&rh, 0, sizeof(rh));
-  rh.ray.org_x = static_cast<float>(o.x());
-  rh.ray.org_y = static_cast<float>(o.y());
-  rh.ray.org_z = static_cast<float>(o.z());
+  rh.ray.org_x = static_cast<float>(origin.x());
+  rh.ray.org_y = static_cast<float>(origin.y());
+  rh.ray.org_z = static_cast<float>(origin.z());
   rh.ray.dir_x = static_cast<float>(dir.x());
   rh.ray.dir_y = static_cast<float>(dir.y());
   rh.ray.dir_z = static_cast<float>(dir.z());
   rh.ray.tnear = 0.0f;
-  rh.ray.tfar = static_cast<float>(length + 2.0 * slack);
+  rh.ray.tfar = static_cast<float>(length);
   rh.ray.mask = 0xFFFFFFFFu;  // Debian's Embree is built with ray masks
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(static_cast<RTCScene>(scene_), &ctx.base, &rh);
+}
+
+void EmbreeLocator::TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, double length,
+                                          std::vector<int>* out) const {
+  // the float segment is stretched a little at both ends; the exact test trims it again
+  const double slack = 1e-4 * (1.0 + length);
+  const size_t before = out->size();
+  CollectAlongSegment(origin - slack * dir, dir, length + 2.0 * slack, out);
+  // a ray exactly along a silhouette edge or through a vertex can fall between a face and its
+  // neighbour seen edge-on: six parallel rays offset 10 um at 60 degrees reach the face
+  if (out->size() == before) {
+    const Vec3 u = dir.unitOrthogonal(), w = dir.cross(u);
+    for (int k = 0; k < 6; ++k) {
+      const double angle = 1.0471975511965976 * k;
+      const Vec3 offset = kEdgeOffset * (std::cos(angle) * u + std::sin(angle) * w);
+      CollectAlongSegment(origin - slack * dir + offset, dir, length + 2.0 * slack, out);
+    }
+  }
+  // a float hit on an edge or vertex may name the neighbour of the triangle the exact test
+  // accepts: every triangle sharing a vertex with a hit is a candidate too
+  const size_t hits_end = out->size();
+  for (size_t i = before; i < hits_end; ++i) {
+    for (int corner : triangles_[(*out)[i]]) {
+      out->insert(out->end(), ring_.ids.begin() + ring_.offsets[corner], ring_.ids.begin() + ring_.offsets[corner + 1]);
+    }
+  }
 }
 
 void EmbreeLocator::TrianglesNearPoint(const Vec3& p, double radius, std::vector<int>* out) const {

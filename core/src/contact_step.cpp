@@ -28,6 +28,7 @@ struct ContactEngine::PassFrame {
   Mat3 r_master, r_slave;   // body -> earth
   Mat3 r_slave_to_master;   // slave body -> master body
   Vec3 t_slave_to_master;   // slave CG in the master frame
+  bool share;               // split the penetration by theta (else the slave restores all of it)
 
   Vec3 ToMaster(const Vec3& p_slave) const { return r_slave_to_master * p_slave + t_slave_to_master; }
 
@@ -105,12 +106,16 @@ StepResult ContactEngine::Step(double dt) {
       const int passes = options_.passes_per_step;
       const double weight = 1.0 / passes;  // each pass estimates the whole interface force
       for (int pass = 0; pass < passes; ++pass) {
-        // a rigid body is always the master; two deformable bodies swap roles every pass
-        int master = (pass % 2 == 0) ? a : b;
+        // a rigid body is always the master; two deformable bodies swap roles every pass, and the
+        // first slave alternates between steps so that neither body is favoured by the order
+        int master = ((pass + step_index_) % 2 == 0) ? a : b;
         if (models_[a]->rigid) master = a;
         if (models_[b]->rigid) master = b;
         const int slave = master == a ? b : a;
-        RunPass(master, slave, &touching[slave == a ? 0 : 1], dt, weight, &force_earth, &moment_earth,
+        // spec §5: the first pass shares the penetration by theta; the later passes find the
+        // master's remainder on the other side and restore it in full
+        const bool share = pass == 0;
+        RunPass(master, slave, share, &touching[slave == a ? 0 : 1], dt, weight, &force_earth, &moment_earth,
                 &result.diagnostics);
       }
     }
@@ -127,12 +132,12 @@ StepResult ContactEngine::Step(double dt) {
   return result;
 }
 
-void ContactEngine::RunPass(int master, int slave, std::vector<int>* touching, double dt, double weight,
+void ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt, double weight,
                             std::vector<Vec3>* force_earth, std::vector<Vec3>* moment_earth,
                             ContactDiagnostics* diag) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
-              Mat3::Identity(), Vec3::Zero()};
+              Mat3::Identity(), Vec3::Zero(), share};
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
   const double mu = 0.5 * (f.master_model->friction + f.slave_model->friction);
@@ -196,6 +201,31 @@ void ContactEngine::RunPass(int master, int slave, std::vector<int>* touching, d
   }
 }
 
+bool ContactEngine::ExamineTriangle(const PassFrame& f, int t, const Vec3& p, const Vec3& ray_dir, bool poly_normal,
+                                    const Located* best, Located* out) const {
+  const auto& tri = f.master_model->mesh.triangles[t];
+  const Vec3& a = f.master->vertices[tri[0]];
+  const Vec3& b = f.master->vertices[tri[1]];
+  const Vec3& c = f.master->vertices[tri[2]];
+  const Vec3& n = f.master->tri_normal[t];
+  const Vec3 d = poly_normal ? n : ray_dir;
+  // the node must lie behind the face: the pushback leaves the master through it
+  if (d.dot(n) <= 1e-9) return false;
+  double depth = 0.0;
+  if (!RayPlaneDistance(p, d, a, n, &depth)) return false;
+  if (depth < -options_.search_backoff || depth > options_.toofar_maximum) return false;
+  const Vec3 q = p + depth * d;
+  if (!InsideTriangleCrossProduct(q, a, b, c, n)) return false;
+  // best = smallest |depth|; ties keep the earlier (lower-index) triangle
+  if (best == nullptr || std::abs(depth) < std::abs(best->depth)) {
+    out->triangle = t;
+    out->depth = depth;
+    out->dir = d;
+    out->point = q;
+  }
+  return true;
+}
+
 bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris, Located* out) const {
   const Vec3& p_slave = f.slave->vertices[v];
   const Vec3 p = f.ToMaster(p_slave);
@@ -237,31 +267,12 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris
   std::sort(tris->begin(), tris->end());
   tris->erase(std::unique(tris->begin(), tris->end()), tris->end());
 
+  // exact test of each candidate in triangle order, with the stop rule
   const int wanted = options_.stop_rule == StopRule::kAfterOne ? 1
                      : options_.stop_rule == StopRule::kBestOfTwo ? 2 : INT32_MAX;
   int accepted = 0;
   for (int t : *tris) {
-    const auto& tri = f.master_model->mesh.triangles[t];
-    const Vec3& a = f.master->vertices[tri[0]];
-    const Vec3& b = f.master->vertices[tri[1]];
-    const Vec3& c = f.master->vertices[tri[2]];
-    const Vec3& n = f.master->tri_normal[t];
-    const Vec3 d = poly_normal ? n : dir;
-    // the node must lie behind the face: the pushback leaves the master through it
-    if (d.dot(n) <= 1e-9) continue;
-    double depth = 0.0;
-    if (!RayPlaneDistance(p, d, a, n, &depth)) continue;
-    if (depth < -backoff || depth > reach) continue;
-    const Vec3 q = p + depth * d;
-    if (!InsideTriangleCrossProduct(q, a, b, c, n)) continue;
-    // stop rule: first accepted, or the smallest |depth| so far (ties keep the lower index)
-    if (accepted == 0 || std::abs(depth) < std::abs(out->depth)) {
-      out->triangle = t;
-      out->depth = depth;
-      out->dir = d;
-      out->point = q;
-    }
-    if (++accepted >= wanted) break;
+    if (ExamineTriangle(f, t, p, dir, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
   }
   out->rel_velocity = v_rel;
   return accepted > 0;
@@ -286,17 +297,20 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   *dir_slave = hit ? Vec3(f.r_slave_to_master.transpose() * hit->dir) : Vec3::Zero();
 
   if (hit && hit->depth >= -options_.contact_tolerance) {
-    // spec §5: the slave takes theta of the penetration; a rigid master takes none
+    // spec §5: the slave takes theta of the penetration (a rigid master takes none); the master
+    // triangle's stiffness and deflection are its corners' averages, and each side's force is taken
+    // at its own total deflection so that a side already crushed further takes less (forces equalise)
     const double depth = std::max(hit->depth, 0.0);
     double theta = 1.0;
-    if (!f.master_model->rigid) {
+    if (!f.master_model->rigid && f.share) {
       const auto& tri = f.master_model->mesh.triangles[hit->triangle];
-      double a_m = 0.0, b_m = 0.0;
+      double a_m = 0.0, b_m = 0.0, deflection_m = 0.0;
       for (int corner : tri) {
         a_m += f.master_model->VertexStiffness(corner).A / 3.0;
         b_m += f.master_model->VertexStiffness(corner).B / 3.0;
+        deflection_m += f.master->delta[corner].norm() / 3.0;
       }
-      theta = CrushShare(a_m, b_m, k.A, k.B, deflection + depth);
+      theta = CrushShare(a_m + b_m * deflection_m, b_m, k.A + k.B * deflection, k.B, depth);
     }
     double push = theta * depth;
     // spec §2 PushbackReduction (version 4 only): withhold a fraction, at most PUSHBACK_REDUCE_LIMIT
@@ -346,12 +360,12 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   // spec §6: DeltaMaxTotal, the unloading state machine and the node law
   s.delta_max[v] = std::max(s.delta_max[v], new_deflection);
   s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
-  const double area = touching ? ProjectedNodeArea(m, s, v, *dir_slave) : 0.0;
+  const double area = touching ? ProjectedNodeArea(m, s, v, *dir_slave) : s.node_area[v];
   const double force =
-      area * NodePressure(s.unload[v], touching, k, new_deflection, s.delta_max[v], e, options_);
+      touching ? area * NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_) : 0.0;
 
-  // work on the node (trapezoid over the deflection change), then commit the new position
-  s.crush_energy += 0.5 * (s.node_force[v] + force) * (new_deflection - deflection);
+  // work of the node law over the deflection change, then commit the new position
+  s.crush_energy += area * NodeLawWork(s.unload[v], k, deflection, new_deflection, s.delta_max[v], e, options_);
   s.node_force[v] = force;
   s.node_area[v] = area;
   s.delta[v] = delta;

@@ -141,8 +141,12 @@ void AddBoxFace(const double size[3], const int segments[3], int a, bool positiv
 }  // namespace
 
 TriMesh Weld(const TriMesh& mesh, double tolerance) {
+  // a tolerance below the coordinates' rounding (or none) merges identical positions only
+  double max_abs = 0.0;
+  for (const Vec3& p : mesh.vertices) max_abs = std::max(max_abs, p.cwiseAbs().maxCoeff());
+  const bool use_grid = tolerance > 0.0 && std::isfinite(tolerance) && max_abs < 1e15 * tolerance;
   // representative of every vertex (first earlier vertex within tolerance)
-  const std::vector<int> rep = tolerance > 0.0 ? GridRepresentatives(mesh, tolerance) : ExactRepresentatives(mesh);
+  const std::vector<int> rep = use_grid ? GridRepresentatives(mesh, tolerance) : ExactRepresentatives(mesh);
   // remap triangles, dropping those whose corners collapse
   std::vector<std::array<int, 3>> triangles;
   triangles.reserve(mesh.triangles.size());

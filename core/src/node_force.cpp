@@ -53,12 +53,10 @@ UnloadState NextUnloadState(UnloadState state, bool touching, double delta, doub
       if (!touching) return UnloadState::kFinishedUnloading;
       return at_peak ? UnloadState::kCanUnload : UnloadState::kNowUnloading;
     case UnloadState::kNowUnloading:
-      if (!touching || delta <= relaxed) return UnloadState::kFinishedUnloading;
-      return at_peak ? UnloadState::kCanUnload : state;
     case UnloadState::kFinishedUnloading:
-      // reloading: back on the rebound curve, or on the loading curve past the old peak
-      if (!touching || delta <= relaxed) return state;
-      return at_peak ? UnloadState::kCanUnload : UnloadState::kNowUnloading;
+      // reloading: on the loading curve again once past the peak, else on the rebound curve
+      if (touching && at_peak) return UnloadState::kCanUnload;
+      return !touching || delta <= relaxed ? UnloadState::kFinishedUnloading : UnloadState::kNowUnloading;
   }
   return state;
 }
@@ -77,6 +75,19 @@ double NodePressure(UnloadState state, bool touching, const Stiffness& k, double
       return 0.0;
   }
   return 0.0;
+}
+
+double NodeLawWork(UnloadState state, const Stiffness& k, double from, double to, double delta_max,
+                   double restitution, const ContactOptions& o) {
+  // the branch the node is on after the update: loading curve, or the rebound curve
+  const bool loading = state == UnloadState::kCannotUnload || state == UnloadState::kStartUnload ||
+                       state == UnloadState::kCanUnload;
+  auto pressure = [&](double delta) {
+    return loading ? LoadingPressure(k, delta, o.null_band)
+                   : ReboundPressure(k, delta, delta_max, restitution, o.null_band, o.rebound_law);
+  };
+  // Simpson's rule: exact for the cubic between the kinks (null band, saturation, zero force)
+  return (to - from) / 6.0 * (pressure(from) + 4.0 * pressure(0.5 * (from + to)) + pressure(to));
 }
 
 double CrushShare(double a_master, double b_master, double a_slave, double b_slave, double delta_total) {

@@ -43,6 +43,7 @@ struct UnitScale {
   double StiffnessPow(int n) const { return us ? units::PoundPerInchPow(n) : 1.0; }
 };
 
+// conversion factors of a unit system (time is in seconds and angles in degrees in both)
 UnitScale ScaleFor(UnitSystem system) {
   UnitScale s;
   if (system == UnitSystem::kUS) {
@@ -81,6 +82,7 @@ std::string At(const std::string& path, std::size_t index) { return path + "[" +
 // name of the whole document in messages
 std::string FieldName(const std::string& path) { return path.empty() ? "(root)" : path; }
 
+// shortest text that reads back as the same double
 std::string FormatDouble(double v) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
@@ -204,6 +206,7 @@ class PathTrackingBuilder {
   std::string error_field_, error_message_;
 };
 
+// parses a whole document; refusals name `file`
 Json ParseJson(const std::string& text, const std::string& file) {
   Json root;
   PathTrackingBuilder builder(&root);
@@ -212,6 +215,7 @@ Json ParseJson(const std::string& text, const std::string& file) {
   return root;
 }
 
+// whole file as text (`ok` false when it cannot be opened)
 std::string ReadTextFile(const fs::path& path, bool* ok) {
   std::ifstream in(path, std::ios::binary);
   *ok = static_cast<bool>(in);
@@ -243,17 +247,20 @@ constexpr Range kNonNegative{0.0, kInfinity, false, false, " >= 0"};
 constexpr Range kUnitInterval{0.0, 1.0, false, false, " in [0, 1]"};
 constexpr Range kUnitIntervalOpen{0.0, 1.0, false, true, " in [0, 1)"};
 
+// member of an object, or nullptr when absent
 const Json* Find(const Json& object, std::string_view key) {
   const auto it = object.find(key);
   return it == object.end() ? nullptr : &*it;
 }
 
+// member of an object that must be present
 const Json& Require(const Source& src, const Json& object, const std::string& path, std::string_view key) {
   const Json* j = Find(object, key);
   if (j == nullptr) Fail(src, Join(path, key), "missing required key \"" + std::string(key) + "\"");
   return *j;
 }
 
+// refuses anything but a JSON object
 void ExpectObject(const Source& src, const Json& j, const std::string& path) {
   if (!j.is_object()) Fail(src, FieldName(path), "expected an object, got " + Describe(j));
 }
@@ -273,6 +280,7 @@ void CheckKeys(const Source& src, const Json& object, const std::string& path,
   CheckKeys(src, object, path, std::span<const std::string_view>(allowed.begin(), allowed.size()));
 }
 
+// a finite number in range (raw input units)
 double ReadNumber(const Source& src, const Json& j, const std::string& path, const Range& range) {
   const std::string expected = std::string("expected a number") + range.text;
   if (!j.is_number()) Fail(src, path, expected + ", got " + Describe(j));
@@ -282,6 +290,7 @@ double ReadNumber(const Source& src, const Json& j, const std::string& path, con
   return v;
 }
 
+// an integral number in lo..hi (2 and 2.0 both accepted)
 int ReadInt(const Source& src, const Json& j, const std::string& path, int lo, int hi, const std::string& expected) {
   bool integral = j.is_number_integer() || j.is_number_unsigned();
   if (j.is_number_float()) {
@@ -294,11 +303,13 @@ int ReadInt(const Source& src, const Json& j, const std::string& path, int lo, i
   return static_cast<int>(v);
 }
 
+// true or false
 bool ReadBool(const Source& src, const Json& j, const std::string& path) {
   if (!j.is_boolean()) Fail(src, path, "expected true or false, got " + Describe(j));
   return j.get<bool>();
 }
 
+// a JSON string
 std::string ReadString(const Source& src, const Json& j, const std::string& path) {
   if (!j.is_string()) Fail(src, path, "expected a string, got " + Describe(j));
   return j.get<std::string>();
@@ -333,6 +344,7 @@ std::string ResolvePath(const Source& src, const std::string& name) {
   return (ec ? p : abs).lexically_normal().string();
 }
 
+// absolute folder of a file (the working folder for an unnamed text)
 fs::path FolderOf(const std::string& file) {
   std::error_code ec;
   if (file.empty()) return fs::current_path(ec);
@@ -340,6 +352,7 @@ fs::path FolderOf(const std::string& file) {
   return (ec ? fs::path(file) : abs).parent_path();
 }
 
+// "US" or "SI"
 UnitSystem ReadUnits(const Source& src, const Json& j, const std::string& path) {
   return ReadChoice<UnitSystem>(src, j, path, {{"US", UnitSystem::kUS}, {"SI", UnitSystem::kSI}});
 }
@@ -347,6 +360,7 @@ UnitSystem ReadUnits(const Source& src, const Json& j, const std::string& path) 
 // ---------------------------------------------------------------------------------------------
 // time and contact options
 
+// "time": step, duration (seconds) and the separation stop
 void ParseTime(const Source& src, const Json& j, const std::string& path, Scenario* s) {
   ExpectObject(src, j, path);
   CheckKeys(src, j, path, {"step", "duration", "stop_at_separation"});
@@ -359,6 +373,7 @@ void ParseTime(const Source& src, const Json& j, const std::string& path, Scenar
   if (const Json* v = Find(j, "stop_at_separation")) s->stop_at_separation = ReadBool(src, *v, Join(path, "stop_at_separation"));
 }
 
+// "contact": every key optional, defaults from ContactOptions
 void ParseContact(const Source& src, const Json& j, const std::string& path, ContactOptions* o) {
   ExpectObject(src, j, path);
   CheckKeys(src, j, path,
@@ -436,6 +451,7 @@ std::array<std::string, 3> ReadAxes(const Source& src, const Json& j, const std:
   return axes;
 }
 
+// "box": sizes and grid segments of a generated box
 void ParseBox(const Source& src, const Json& j, const std::string& path, MeshSource* mesh) {
   ExpectObject(src, j, path);
   CheckKeys(src, j, path, {"length", "width", "height", "segments"});
@@ -453,6 +469,7 @@ void ParseBox(const Source& src, const Json& j, const std::string& path, MeshSou
   mesh->box = true;
 }
 
+// "mesh": a file (unit, scale, axes, fit) or a generated box, plus subdivisions
 MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) {
   ExpectObject(src, j, path);
   CheckKeys(src, j, path, {"file", "unit", "scale", "axes", "fit_length", "subdivisions", "box"});
@@ -568,6 +585,7 @@ constexpr std::array<std::string_view, 13> kBodyKeys = {
     "name", "vehicle", "mesh", "mass", "weight", "cg", "inertia", "restitution", "friction", "rigid", "motion",
     "stiffness", "initial"};
 
+// the shared keys of one object, converted with its source's units
 BodyFields ParseBodyFields(const Source& src, const Json& j, const std::string& path) {
   const auto& u = src.units;
   BodyFields b;
@@ -656,6 +674,7 @@ RigidState ParseInitial(const Source& src, const Json& j, const std::string& pat
   return r;
 }
 
+// one scenario body: its vehicle file, its own keys, then the checks on the merged result
 BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   ExpectObject(src, j, path);
   CheckKeys(src, j, path, kBodyKeys);

@@ -60,8 +60,8 @@ void ExpectSameContact(SearchDirection method, StopRule rule) {
   for (int trial = 0; trial < 5; ++trial) {
     // the second car nose-first into the first one's side, randomly turned and offset
     RigidState a, b;
-    b.position = Vec3(0.3 * jitter(rng), -3.22 + 0.05 * jitter(rng), 0.02 * jitter(rng));
-    b.yaw = 1.5708 + 0.3 * jitter(rng);
+    b.position = Vec3(0.3 * jitter(rng), -3.07 + 0.05 * jitter(rng), 0.02 * jitter(rng));
+    b.yaw = 1.5708 + 0.15 * jitter(rng);
     b.velocity = Vec3(0.0, 10.0, 0.0);
     ContactEngine with_embree({model, model}, {a, b}, options, MakeEmbreeLocatorFactory(device));
     ContactEngine with_oracle({model, model}, {a, b}, options, MakeBruteForceLocatorFactory());
@@ -74,7 +74,7 @@ void ExpectSameContact(SearchDirection method, StopRule rule) {
         EXPECT_EQ(with_embree.state(i).delta, with_oracle.state(i).delta);
       }
     }
-    EXPECT_GT(with_oracle.state(1).crush_energy, 0.0) << "trial " << trial << " made no contact";
+    EXPECT_GT(with_oracle.state(0).crush_energy + with_oracle.state(1).crush_energy, 0.0) << "trial " << trial << " made no contact";
   }
 }
 

@@ -23,14 +23,25 @@ double SurfaceArea(const TriMesh& mesh) {
   return area;
 }
 
-// a fresh folder for this test's files
-fs::path TempFolder() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() / ("dymesh_mesh_test_" + std::string(info->name()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+// a fresh folder for this test's files, removed afterwards
+class TempFolder {
+ public:
+  TempFolder() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() /
+            ("dymesh_mesh_test_" + std::string(info->test_suite_name()) + "_" + info->name());
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  fs::path path_;
+};
 
 void WriteText(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -167,7 +178,9 @@ TEST(BuildVertexTriangles, CsrListsEveryUse) {
     for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
       const auto& t = box.triangles[adj.ids[k]];
       EXPECT_TRUE(t[0] == v || t[1] == v || t[2] == v);
-      if (k > adj.offsets[v]) EXPECT_LT(adj.ids[k - 1], adj.ids[k]);
+      if (k > adj.offsets[v]) {
+        EXPECT_LT(adj.ids[k - 1], adj.ids[k]);
+      }
     }
   }
 }
@@ -179,7 +192,7 @@ TEST(FlipWinding, NegatesVolume) {
 }
 
 TEST(MeshFiles, WriteObjThenLoadRoundTrip) {
-  const fs::path dir = TempFolder();
+  const TempFolder dir;
   const TriMesh box = MakeBox(1.5, 0.5, 0.25, 3, 1, 1);
   const std::string path = (dir / "box.obj").string();
   WriteObj(box, path, "test box\nsecond line");
@@ -192,12 +205,12 @@ TEST(MeshFiles, WriteObjThenLoadRoundTrip) {
 }
 
 TEST(MeshFiles, WriteObjToMissingFolderThrows) {
-  const fs::path dir = TempFolder();
+  const TempFolder dir;
   EXPECT_THROW(WriteObj(MakeBox(1, 1, 1, 1, 1, 1), (dir / "no" / "such" / "x.obj").string(), ""), std::runtime_error);
 }
 
 TEST(MeshFiles, LoadRefusesMissingAndGarbage) {
-  const fs::path dir = TempFolder();
+  const TempFolder dir;
   const std::string missing = (dir / "missing.obj").string();
   try {
     LoadMeshFile(missing, "bodies[0].mesh.file");
@@ -218,7 +231,7 @@ TEST(MeshFiles, LoadRefusesMissingAndGarbage) {
 }
 
 TEST(BuildBodyMesh, MapsAxesScalesAndFits) {
-  const fs::path dir = TempFolder();
+  const TempFolder dir;
   const std::string path = (dir / "yup.obj").string();
   // a y-up box: 4 long (x), 1 tall (y), 2 wide (z), in mm
   WriteObj(MakeBox(4000.0, 1000.0, 2000.0, 2, 1, 1), path, "y-up box");
@@ -244,7 +257,7 @@ TEST(BuildBodyMesh, MapsAxesScalesAndFits) {
 }
 
 TEST(BuildBodyMesh, OrientsInwardMeshOutward) {
-  const fs::path dir = TempFolder();
+  const TempFolder dir;
   TriMesh inward = MakeBox(1.0, 1.0, 1.0, 1, 1, 1);
   FlipWinding(&inward);
   const std::string path = (dir / "inward.obj").string();

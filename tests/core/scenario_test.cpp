@@ -1,1 +1,396 @@
-// placeholder (being written)
+// Scenario JSON: unit conversion of a good scenario, and one refusal per kind of bad input, each
+// naming the file and the field.
+#include "dymesh/core/scenario.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "dymesh/core/mesh_import.h"
+#include "dymesh/core/units.h"
+
+namespace dymesh {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+void WriteText(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+// a good US scenario: a file-mesh car, a car from an SI vehicle file, a rigid wall
+constexpr const char* kGoodScenario = R"({
+  "name": "conversion test",
+  "units": "US",
+  "time": {"step": 0.001, "duration": 0.2, "stop_at_separation": false},
+  "contact": {"passes_per_step": 3, "search_direction": "specified", "specified_direction": [0, 3, 4],
+              "stop_rule": "best_of_two", "version": 4, "null_band": 0.25, "toofar_maximum": 8,
+              "pushback_reduction": 0.25, "friction_null_band": 2, "rebound_law": "literal",
+              "calc_nabor_interval": 7},
+  "bodies": [
+    {"name": "car",
+     "mesh": {"file": "meshes/car.obj", "unit": "mm", "scale": 2, "axes": ["x", "z", "-y"], "fit_length": 180,
+              "subdivisions": 1},
+     "weight": 3000, "cg": [10, 0, -20], "inertia": [3800, 20000, 22000],
+     "restitution": 0.1, "friction": 0.5,
+     "stiffness": {"default": {"A": 200, "B": 75},
+                   "front": {"A": 350, "B": 125, "conversion_height": 25, "sat_crush": 20, "Kv": 50},
+                   "back": {"A3": 10, "B3": 4, "C3": -0.5, "D3": 0.01, "max_crush": 30}},
+     "initial": {"position": [100, -50, -20], "heading": 90, "speed": 30, "yaw_rate": 10}},
+    {"name": "sedan", "vehicle": "vehicles/sedan.json", "restitution": 0.2,
+     "initial": {"position": [0, 0, 0], "velocity": [10, 0, 0]}},
+    {"name": "wall", "mesh": {"box": {"length": 40, "width": 400, "height": 100, "segments": [1, 4, 2]}},
+     "rigid": true, "motion": "fixed", "initial": {"position": [300, 0, -50]}}
+  ]
+})";
+
+// a vehicle file in SI units (its mesh path is relative to the vehicle file)
+constexpr const char* kSedanVehicle = R"({
+  "units": "SI",
+  "mesh": {"file": "../meshes/car.obj", "unit": "mm"},
+  "mass": 1500, "cg": [0.1, 0, -0.5], "restitution": 0.3, "friction": 0.4, "motion": "free",
+  "stiffness": {"default": {"A": 50000, "B": 700000}}
+})";
+
+// a folder with the scenario's mesh and vehicle files, removed afterwards
+class ScenarioFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("dymesh_scenario_test_" + std::string(info->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "meshes");
+    WriteObj(MakeBox(4000.0, 1000.0, 1600.0, 4, 1, 2), (dir_ / "meshes" / "car.obj").string(), "y-up box, mm");
+    WriteText(dir_ / "vehicles" / "sedan.json", kSedanVehicle);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  std::string ScenarioPath() const { return (dir_ / "scenario.json").string(); }
+  std::string Abs(const std::string& relative) const { return (dir_ / relative).lexically_normal().string(); }
+  static Json Good() { return Json::parse(kGoodScenario); }
+
+  // parses `text` expecting a refusal that names `file` and `field`; returns the message
+  std::string ExpectRefused(const std::string& text, const std::string& file, const std::string& field) const {
+    try {
+      ParseScenario(text, ScenarioPath());
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), file) << e.what();
+      EXPECT_EQ(e.field(), field) << e.what();
+      return e.what();
+    }
+    ADD_FAILURE() << "accepted, expected a refusal at " << field;
+    return {};
+  }
+  std::string ExpectRefused(const Json& j, const std::string& field) const {
+    return ExpectRefused(j.dump(), ScenarioPath(), field);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(ScenarioFiles, GoodUsScenarioConverts) {
+  const Scenario s = ParseScenario(kGoodScenario, ScenarioPath());
+  EXPECT_EQ(s.name, "conversion test");
+  EXPECT_EQ(s.units, UnitSystem::kUS);
+  EXPECT_EQ(s.time_step, 0.001);
+  EXPECT_EQ(s.duration, 0.2);
+  EXPECT_FALSE(s.stop_at_separation);
+  ASSERT_EQ(s.bodies.size(), 3u);
+
+  // contact options: lengths in inches, speed in mph, the rest as given or default
+  const ContactOptions& c = s.contact;
+  EXPECT_EQ(c.passes_per_step, 3);
+  EXPECT_EQ(c.search_direction, SearchDirection::kSpecified);
+  EXPECT_NEAR((c.specified_direction - Vec3(0, 0.6, 0.8)).norm(), 0.0, 1e-15);
+  EXPECT_EQ(c.stop_rule, StopRule::kBestOfTwo);
+  EXPECT_EQ(c.version, 4);
+  EXPECT_DOUBLE_EQ(c.null_band, 0.00635);            // 0.25 in
+  EXPECT_DOUBLE_EQ(c.toofar_maximum, 0.2032);        // 8 in
+  EXPECT_DOUBLE_EQ(c.toofar_margin, 0.0254);         // default 1 in
+  EXPECT_EQ(c.pushback_reduction, 0.25);
+  EXPECT_DOUBLE_EQ(c.friction_null_band, 0.89408);   // 2 mph
+  EXPECT_EQ(c.rebound_law, ReboundLaw::kLiteral);
+  EXPECT_EQ(c.calc_nabor_interval, 7);
+
+  // body 0: mesh source, mass properties
+  const BodySpec& car = s.bodies[0];
+  EXPECT_EQ(car.name, "car");
+  EXPECT_EQ(car.mesh.file, Abs("meshes/car.obj"));
+  EXPECT_FALSE(car.mesh.box);
+  EXPECT_DOUBLE_EQ(car.mesh.scale, 0.002);           // mm times 2
+  EXPECT_EQ(car.mesh.axes, (std::array<std::string, 3>{"x", "z", "-y"}));
+  ASSERT_TRUE(car.mesh.fit_length.has_value());
+  EXPECT_DOUBLE_EQ(*car.mesh.fit_length, 4.572);     // 180 in
+  EXPECT_EQ(car.mesh.subdivisions, 1);
+  EXPECT_DOUBLE_EQ(car.mass, 1360.77711);            // 3000 lb
+  ASSERT_TRUE(car.cg.has_value());
+  EXPECT_NEAR((*car.cg - Vec3(0.254, 0.0, -0.508)).norm(), 0.0, 1e-15);
+  ASSERT_TRUE(car.inertia_diagonal.has_value());
+  EXPECT_NEAR(car.inertia_diagonal->x(), 429.34235030, 1e-6);   // 3800 lb in s^2
+  EXPECT_NEAR(car.inertia_diagonal->y(), 2259.69658055, 1e-6);  // 20000 lb in s^2
+  EXPECT_EQ(car.restitution, 0.1);
+  EXPECT_EQ(car.friction, 0.5);
+  EXPECT_FALSE(car.rigid);
+  EXPECT_EQ(car.motion, MotionModel::kPlanar);
+
+  // stiffness: 2-D over the conversion height (default 30 in), 3-D per area
+  const auto& k = car.stiffness;
+  const Stiffness& left = k[static_cast<int>(BodySurface::kLeft)];
+  EXPECT_NEAR(left.A, 45965.0486211, 1e-6);          // 200 lb/in over 30 in
+  EXPECT_NEAR(left.B, 678617.843816, 1e-5);          // 75 lb/in^2 over 30 in
+  const Stiffness& front = k[static_cast<int>(BodySurface::kFront)];
+  EXPECT_NEAR(front.A, 96526.6021044, 1e-6);         // 350 lb/in over 25 in = 14 psi
+  EXPECT_NEAR(front.B, 1357235.68763, 1e-4);         // 125 lb/in^2 over 25 in = 5 lb/in^3
+  EXPECT_DOUBLE_EQ(front.sat_crush, 0.508);          // 20 in
+  EXPECT_NEAR(front.unload_slope, 13572356.8763, 1e-3);  // Kv 50 lb/in^3
+  const Stiffness& back = k[static_cast<int>(BodySurface::kBack)];
+  EXPECT_NEAR(back.A, 68947.5729317, 1e-6);          // 10 lb/in^2
+  EXPECT_NEAR(back.B, 1085788.55011, 1e-4);          // 4 lb/in^3
+  EXPECT_NEAR(back.C, -5343447.5891, 1e-3);          // -0.5 lb/in^4
+  EXPECT_NEAR(back.D, 4207439.04654, 1e-3);          // 0.01 lb/in^5
+  EXPECT_DOUBLE_EQ(back.max_crush, 0.762);           // 30 in
+  EXPECT_EQ(k[static_cast<int>(BodySurface::kTop)].A, left.A);
+
+  // initial state: inches, degrees, mph along the heading, yaw rate as body r
+  const RigidState& r = car.initial;
+  EXPECT_NEAR((r.position - Vec3(2.54, -1.27, -0.508)).norm(), 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(r.yaw, 0.5 * 3.14159265358979323846);
+  EXPECT_NEAR((r.velocity - Vec3(0.0, 13.4112, 0.0)).norm(), 0.0, 1e-12);  // 30 mph east
+  EXPECT_NEAR((r.omega - Vec3(0.0, 0.0, 0.174532925199)).norm(), 0.0, 1e-12);
+
+  // body 1: vehicle file in SI, then the scenario's own fields
+  const BodySpec& sedan = s.bodies[1];
+  EXPECT_EQ(sedan.mesh.file, Abs("meshes/car.obj"));
+  EXPECT_DOUBLE_EQ(sedan.mesh.scale, 0.001);
+  EXPECT_EQ(sedan.mass, 1500.0);
+  EXPECT_NEAR((*sedan.cg - Vec3(0.1, 0.0, -0.5)).norm(), 0.0, 1e-15);
+  EXPECT_EQ(sedan.restitution, 0.2);                 // overridden by the scenario
+  EXPECT_EQ(sedan.friction, 0.4);
+  EXPECT_EQ(sedan.motion, MotionModel::kFree6Dof);
+  EXPECT_NEAR(sedan.stiffness[0].A, 65616.7979003, 1e-6);  // 50000 N/m over 0.762 m
+  EXPECT_DOUBLE_EQ(sedan.initial.velocity.x(), 4.4704);    // 10 mph
+
+  // body 2: a rigid fixed box in metres, no mass
+  const BodySpec& wall = s.bodies[2];
+  EXPECT_TRUE(wall.mesh.box);
+  EXPECT_NEAR((wall.mesh.box_size - Vec3(1.016, 10.16, 2.54)).norm(), 0.0, 1e-15);
+  EXPECT_EQ(wall.mesh.box_segments, (std::array<int, 3>{1, 4, 2}));
+  EXPECT_TRUE(wall.rigid);
+  EXPECT_EQ(wall.motion, MotionModel::kFixed);
+  EXPECT_EQ(wall.mass, 0.0);
+}
+
+TEST_F(ScenarioFiles, GoodScenarioMeshesBuild) {
+  const Scenario s = ParseScenario(kGoodScenario, ScenarioPath());
+  // 4000 x 1000 x 1600 mm y-up box, doubled, axes (x, z, -y), fitted to 180 in long
+  const MeshStats car = ComputeStats(BuildBodyMesh(s.bodies[0].mesh, s.file, "bodies[0].mesh"));
+  EXPECT_NEAR(car.max.x() - car.min.x(), 4.572, 1e-9);
+  EXPECT_NEAR(car.max.y() - car.min.y(), 4.572 * 0.4, 1e-9);
+  EXPECT_NEAR(car.max.z() - car.min.z(), 4.572 * 0.25, 1e-9);
+  const MeshStats wall = ComputeStats(BuildBodyMesh(s.bodies[2].mesh, s.file, "bodies[2].mesh"));
+  EXPECT_EQ(wall.open_edges, 0);
+}
+
+TEST_F(ScenarioFiles, LoadScenarioReadsTheFile) {
+  WriteText(ScenarioPath(), kGoodScenario);
+  const Scenario s = LoadScenario(ScenarioPath());
+  EXPECT_EQ(s.file, ScenarioPath());
+  EXPECT_EQ(s.bodies.size(), 3u);
+}
+
+TEST_F(ScenarioFiles, RefusesMissingScenarioFile) {
+  const std::string path = Abs("none.json");
+  try {
+    LoadScenario(path);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.field(), "(file)");
+  }
+}
+
+TEST_F(ScenarioFiles, RefusesMalformedJson) {
+  const std::string message = ExpectRefused(R"({"units": "US",, "bodies": []})", ScenarioPath(), "(json)");
+  EXPECT_NE(message.find("byte 16"), std::string::npos) << message;
+}
+
+TEST_F(ScenarioFiles, RefusesWrongType) {
+  Json j = Good();
+  j["bodies"][0].erase("weight");
+  j["bodies"][0]["mass"] = "heavy";
+  const std::string message = ExpectRefused(j, "bodies[0].mass");
+  EXPECT_NE(message.find("expected a number > 0, got \"heavy\""), std::string::npos) << message;
+  Json k = Good();
+  k["bodies"][0]["initial"]["position"] = Json::array({1, 2});
+  ExpectRefused(k, "bodies[0].initial.position");
+}
+
+TEST_F(ScenarioFiles, RefusesUnknownKeys) {
+  Json j = Good();
+  j["bodies"][0]["colour"] = "red";
+  const std::string message = ExpectRefused(j, "bodies[0].colour");
+  EXPECT_NE(message.find("allowed keys: name, vehicle, mesh"), std::string::npos) << message;
+  Json k = Good();
+  k["contact"]["passes"] = 2;
+  ExpectRefused(k, "contact.passes");
+  Json m = Good();
+  m["bodies"][0]["stiffness"]["front"]["C"] = 1;
+  ExpectRefused(m, "bodies[0].stiffness.front.C");
+}
+
+TEST_F(ScenarioFiles, RefusesMissingMeshFile) {
+  Json j = Good();
+  j["bodies"][0]["mesh"]["file"] = "meshes/none.obj";
+  const std::string message = ExpectRefused(j, "bodies[0].mesh.file");
+  EXPECT_NE(message.find("file not found: " + Abs("meshes/none.obj")), std::string::npos) << message;
+}
+
+TEST_F(ScenarioFiles, RefusesUnreadableMeshFile) {
+  // the file exists, so parsing accepts it; loading the mesh refuses it
+  WriteText(dir_ / "meshes" / "garbage.obj", "this is not a mesh\nf 7 8 9\n");
+  Json j = Good();
+  j["bodies"][0]["mesh"]["file"] = "meshes/garbage.obj";
+  const Scenario s = ParseScenario(j.dump(), ScenarioPath());
+  try {
+    BuildBodyMesh(s.bodies[0].mesh, s.file, "bodies[0].mesh");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), Abs("meshes/garbage.obj"));
+    EXPECT_EQ(e.field(), "bodies[0].mesh.file");
+  }
+}
+
+TEST_F(ScenarioFiles, RefusesNonFiniteNumber) {
+  std::string text = Good().dump();
+  const std::string weight = "\"weight\":3000";
+  ASSERT_NE(text.find(weight), std::string::npos);
+  text.replace(text.find(weight), weight.size(), "\"weight\":1e999");
+  const std::string message = ExpectRefused(text, ScenarioPath(), "bodies[0].weight");
+  EXPECT_NE(message.find("expected a finite number"), std::string::npos) << message;
+}
+
+TEST_F(ScenarioFiles, RefusesNegativeMass) {
+  Json j = Good();
+  j["bodies"][0].erase("weight");
+  j["bodies"][0]["mass"] = -3;
+  const std::string message = ExpectRefused(j, "bodies[0].mass");
+  EXPECT_NE(message.find("expected a number > 0, got -3"), std::string::npos) << message;
+}
+
+TEST_F(ScenarioFiles, RefusesRestitutionAboveOne) {
+  Json j = Good();
+  j["bodies"][0]["restitution"] = 1.5;
+  const std::string message = ExpectRefused(j, "bodies[0].restitution");
+  EXPECT_NE(message.find("in [0, 1], got 1.5"), std::string::npos) << message;
+}
+
+TEST_F(ScenarioFiles, RefusesMissingRequiredFields) {
+  Json j = Good();
+  j["bodies"][1].erase("initial");
+  ExpectRefused(j, "bodies[1].initial");
+  Json k = Good();
+  k.erase("units");
+  ExpectRefused(k, "units");
+  Json m = Good();
+  m["bodies"][0]["initial"].erase("position");
+  ExpectRefused(m, "bodies[0].initial.position");
+  Json n = Good();
+  n["bodies"][0].erase("weight");  // neither mass nor weight on a moving body
+  ExpectRefused(n, "bodies[0].mass");
+}
+
+TEST_F(ScenarioFiles, RefusesMixedTwoAndThreeDStiffness) {
+  Json j = Good();
+  j["bodies"][0]["stiffness"]["front"]["A3"] = 5;
+  const std::string message = ExpectRefused(j, "bodies[0].stiffness.front");
+  EXPECT_NE(message.find("mixes"), std::string::npos) << message;
+}
+
+TEST_F(ScenarioFiles, RefusesDeformableBodyWithoutStiffness) {
+  Json j = Good();
+  j["bodies"][0]["stiffness"].erase("default");  // right, left, top, bottom now have none
+  ExpectRefused(j, "bodies[0].stiffness");
+}
+
+TEST_F(ScenarioFiles, ErrorsInVehicleFileNameIt) {
+  WriteText(dir_ / "vehicles" / "sedan.json",
+            R"({"units": "SI", "mesh": {"file": "../meshes/car.obj"}, "mass": 1500,
+                "stiffness": {"default": {"A": -1, "B": 700000}}})");
+  const std::string message =
+      ExpectRefused(Good().dump(), Abs("vehicles/sedan.json"), "stiffness.default.A");
+  EXPECT_NE(message.find("expected a number >= 0, got -1"), std::string::npos) << message;
+  // a missing vehicle file is the scenario's error
+  Json j = Good();
+  j["bodies"][1]["vehicle"] = "vehicles/none.json";
+  ExpectRefused(j, "bodies[1].vehicle");
+}
+
+TEST_F(ScenarioFiles, RefusesOtherImpossibleInputs) {
+  Json both = Good();
+  both["bodies"][0]["mass"] = 1000;
+  ExpectRefused(both, "bodies[0].weight");
+  Json names = Good();
+  names["bodies"][1]["name"] = "car";
+  ExpectRefused(names, "bodies[1].name");
+  Json one = Good();
+  one["bodies"] = Json::array({one["bodies"][0]});
+  ExpectRefused(one, "bodies");
+  Json axes = Good();
+  axes["bodies"][0]["mesh"]["axes"] = Json::array({"x", "y", "x"});
+  ExpectRefused(axes, "bodies[0].mesh.axes");
+  Json steps = Good();
+  steps["time"]["step"] = 1e-9;
+  ExpectRefused(steps, "time.duration");
+  Json version = Good();
+  version["contact"]["version"] = 5;
+  ExpectRefused(version, "contact.version");
+  Json zero = Good();
+  zero["contact"]["specified_direction"] = Json::array({0, 0, 0});
+  ExpectRefused(zero, "contact.specified_direction");
+  // a duplicated key would silently keep the last value
+  std::string text = Good().dump();
+  const std::string weight = "\"weight\":3000";
+  text.replace(text.find(weight), weight.size(), weight + "," + weight);
+  ExpectRefused(text, ScenarioPath(), "bodies[0].weight");
+}
+
+TEST(RepositoryScenarios, AllParse) {
+  // every scenario shipped in data/ loads, with its vehicles and meshes
+  const fs::path root = fs::path(DYMESH_DATA_DIR) / "scenarios";
+  int count = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    Scenario s;
+    ASSERT_NO_THROW(s = LoadScenario(entry.path().string()));
+    EXPECT_GE(s.bodies.size(), 2u);
+    ++count;
+  }
+  EXPECT_GE(count, 3);
+}
+
+TEST(RepositoryScenarios, BarrierFrontalValues) {
+  const Scenario s = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json");
+  ASSERT_EQ(s.bodies.size(), 2u);
+  const BodySpec& car = s.bodies[0];
+  EXPECT_DOUBLE_EQ(car.mass, 3000 * units::kPoundMass);
+  EXPECT_DOUBLE_EQ(car.initial.velocity.x(), 30 * units::kMph);
+  EXPECT_DOUBLE_EQ(car.restitution, 0.1);
+  // the car's front is about 1 in from the barrier face at t = 0
+  const MeshStats mesh = ComputeStats(BuildBodyMesh(car.mesh, s.file, "bodies[0].mesh"));
+  const double front = car.initial.position.x() + mesh.max.x() - car.cg->x();
+  const double face = s.bodies[1].initial.position.x() - 0.5 * s.bodies[1].mesh.box_size.x();
+  EXPECT_NEAR((face - front) / units::kInch, 1.0, 0.05);
+}
+
+}  // namespace
+}  // namespace dymesh

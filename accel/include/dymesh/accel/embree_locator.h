@@ -37,6 +37,7 @@ class EmbreeLocator final : public Locator {
 
  private:
   void CopyVertices(const std::vector<Vec3>& vertices);
+  void CollectAlongSegment(const Vec3& origin, const Vec3& dir, double length, std::vector<int>* out) const;
 
   std::shared_ptr<const EmbreeDevice> device_;
   void* scene_ = nullptr;
@@ -44,6 +45,7 @@ class EmbreeLocator final : public Locator {
   float* vertex_buffer_ = nullptr;  // Embree-owned float3 vertices (with padding)
   size_t vertex_count_ = 0;
   std::vector<std::array<int, 3>> triangles_;
+  VertexTriangles ring_;            // triangles around each vertex (candidates beside a hit)
 };
 
 /// Factory for the contact engine; all locators share one device.

@@ -60,9 +60,11 @@ class ContactEngine {
  private:
   struct PassFrame;
   struct Located;
-  void RunPass(int master, int slave, std::vector<int>* touching, double dt, double weight,
+  void RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt, double weight,
                std::vector<Vec3>* force_earth, std::vector<Vec3>* moment_earth, ContactDiagnostics* diag);
   bool LocateNode(const PassFrame& f, int v, std::vector<int>* scratch, Located* out) const;
+  bool ExamineTriangle(const PassFrame& f, int t, const Vec3& p, const Vec3& ray_dir, bool poly_normal,
+                       const Located* best, Located* out) const;
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
                      ContactDiagnostics* diag, Vec3* pushback_dir_slave);
   bool BoundsOverlap(int a, int b) const;
