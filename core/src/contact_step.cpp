@@ -104,7 +104,7 @@ StepResult ContactEngine::Step(double dt) {
       ++result.diagnostics.pairs_in_contact;
       auto& touching = touching_[static_cast<size_t>(a) * n + b];
       const int passes = options_.passes_per_step;
-      const double weight = 1.0 / passes;  // each pass estimates the whole interface force
+      std::vector<PassSums> sums(passes);
       for (int pass = 0; pass < passes; ++pass) {
         // a rigid body is always the master; two deformable bodies swap roles every pass, and the
         // first slave alternates between steps so that neither body is favoured by the order
@@ -115,9 +115,9 @@ StepResult ContactEngine::Step(double dt) {
         // spec §5: the first pass shares the penetration by theta; the later passes find the
         // master's remainder on the other side and restore it in full
         const bool share = pass == 0;
-        RunPass(master, slave, share, &touching[slave == a ? 0 : 1], dt, weight, &force_earth, &moment_earth,
-                &result.diagnostics);
+        sums[pass] = RunPass(master, slave, share, &touching[slave == a ? 0 : 1], dt, &result.diagnostics);
       }
+      AddPairLoads(sums, &force_earth, &moment_earth);
     }
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
@@ -132,9 +132,8 @@ StepResult ContactEngine::Step(double dt) {
   return result;
 }
 
-void ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt, double weight,
-                            std::vector<Vec3>* force_earth, std::vector<Vec3>* moment_earth,
-                            ContactDiagnostics* diag) {
+ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>* touching,
+                                              double dt, ContactDiagnostics* diag) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
               Mat3::Identity(), Vec3::Zero(), share};
@@ -156,6 +155,9 @@ void ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>*
                  std::back_inserter(merged));
   diag->candidates += static_cast<long long>(merged.size());
 
+  PassSums sums;
+  sums.master = master;
+  sums.slave = slave;
   std::vector<int> now_touching, moved, scratch;
   const std::vector<int>& was = *touching;
   for (int v : merged) {
@@ -173,23 +175,23 @@ void ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>*
     now_touching.push_back(v);
     ++diag->touching;
 
-    // node force on the slave along its pushback direction, friction against the sliding (spec §7)
+    // node force on the slave along its pushback direction, friction against the sliding on the
+    // master surface (spec §7)
     const Vec3 dir_earth = f.r_master * hit.dir;
+    const Vec3 normal_earth = f.r_master * f.master->tri_normal[hit.triangle];
     Vec3 force = node_force * dir_earth;
     const Vec3 v_rel = f.r_master * hit.rel_velocity;
-    const Vec3 v_slide = v_rel - v_rel.dot(dir_earth) * dir_earth;
+    const Vec3 v_slide = v_rel - v_rel.dot(normal_earth) * normal_earth;
     const double slide = v_slide.norm();
     if (mu > 0.0 && slide > options_.friction_null_band) {
       force -= (mu * node_force / slide) * v_slide;
-      f.slave->friction_energy += weight * mu * node_force * slide * dt;
+      sums.friction_energy += mu * node_force * slide;
     }
     // determinism: sums run in ascending node order within a fixed pass order
-    const Vec3 lever_slave = f.r_slave * f.slave->vertices[v];
-    const Vec3 lever_master = f.r_master * hit.point;
-    (*force_earth)[slave] += weight * force;
-    (*moment_earth)[slave] += weight * lever_slave.cross(force);
-    (*force_earth)[master] -= weight * force;
-    (*moment_earth)[master] -= weight * lever_master.cross(force);
+    sums.touching_area += f.slave->node_area[v];
+    sums.force_slave += force;
+    sums.moment_slave += (f.r_slave * f.slave->vertices[v]).cross(force);
+    sums.moment_master -= (f.r_master * hit.point).cross(force);
   }
   *touching = std::move(now_touching);
 
@@ -198,6 +200,25 @@ void ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>*
     UpdateTriangles(*f.slave_model, moved, f.slave);
     RefreshBounds(slave);
     locators_[slave]->Update(f.slave->vertices);
+  }
+  sums.friction_energy *= dt;
+  return sums;
+}
+
+void ContactEngine::AddPairLoads(const std::vector<PassSums>& sums, std::vector<Vec3>* force_earth,
+                                 std::vector<Vec3>* moment_earth) {
+  // each pass estimates the whole interface force from its slave's nodes; estimates are weighted by
+  // the contact area the slave saw, so a side whose mesh cannot resolve the contact counts less
+  double area = 0.0;
+  for (const PassSums& p : sums) area += p.touching_area;
+  if (area <= 0.0) return;
+  for (const PassSums& p : sums) {
+    const double w = p.touching_area / area;
+    (*force_earth)[p.slave] += w * p.force_slave;
+    (*moment_earth)[p.slave] += w * p.moment_slave;
+    (*force_earth)[p.master] -= w * p.force_slave;
+    (*moment_earth)[p.master] += w * p.moment_master;
+    states_[p.slave].friction_energy += w * p.friction_energy;
   }
 }
 

@@ -60,8 +60,19 @@ class ContactEngine {
  private:
   struct PassFrame;
   struct Located;
-  void RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt, double weight,
-               std::vector<Vec3>* force_earth, std::vector<Vec3>* moment_earth, ContactDiagnostics* diag);
+  // one pass's sums: the slave's node forces (earth frame) and moments about each CG
+  struct PassSums {
+    int master = 0, slave = 0;
+    Vec3 force_slave{0, 0, 0};    // [N] on the slave (the master takes the opposite)
+    Vec3 moment_slave{0, 0, 0};   // [N m] about the slave's CG
+    Vec3 moment_master{0, 0, 0};  // [N m] about the master's CG
+    double touching_area = 0.0;   // [m^2] of slave nodes carrying force
+    double friction_energy = 0.0; // [J] dissipated by friction over the step
+  };
+  PassSums RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt,
+                   ContactDiagnostics* diag);
+  void AddPairLoads(const std::vector<PassSums>& sums, std::vector<Vec3>* force_earth,
+                    std::vector<Vec3>* moment_earth);
   bool LocateNode(const PassFrame& f, int v, std::vector<int>* scratch, Located* out) const;
   bool ExamineTriangle(const PassFrame& f, int t, const Vec3& p, const Vec3& ray_dir, bool poly_normal,
                        const Located* best, Located* out) const;
