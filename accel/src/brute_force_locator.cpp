@@ -10,7 +10,7 @@ BruteForceLocator::BruteForceLocator(const TriMesh& mesh) : triangles_(mesh.tria
 
 void BruteForceLocator::Update(const std::vector<Vec3>& vertices) { vertices_ = vertices; }
 
-void BruteForceLocator::TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, double length,
+void BruteForceLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const Vec3& dir, double length,
                                               std::vector<int>* out) const {
   // every triangle whose plane the segment crosses inside the triangle, in double precision
   const double slack = 1e-9 * (1.0 + length);
@@ -26,7 +26,7 @@ void BruteForceLocator::TrianglesAlongSegment(const Vec3& origin, const Vec3& di
   }
 }
 
-void BruteForceLocator::TrianglesNearPoint(const Vec3& p, double radius, std::vector<int>* out) const {
+void BruteForceLocator::TrianglesNearPoint(int /*key*/, const Vec3& p, double radius, std::vector<int>* out) const {
   // every triangle whose bounding box comes within the radius
   for (size_t t = 0; t < triangles_.size(); ++t) {
     const Vec3& a = vertices_[triangles_[t][0]];

@@ -114,7 +114,7 @@ void EmbreeLocator::CollectAlongSegment(const Vec3& origin, const Vec3& dir, dou
   rtcIntersect1(static_cast<RTCScene>(scene_), &ctx.base, &rh);
 }
 
-void EmbreeLocator::TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, double length,
+void EmbreeLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const Vec3& dir, double length,
                                           std::vector<int>* out) const {
   // the float segment is stretched a little at both ends; the exact test trims it again
   const double slack = 1e-4 * (1.0 + length);
@@ -140,7 +140,7 @@ void EmbreeLocator::TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, d
   }
 }
 
-void EmbreeLocator::TrianglesNearPoint(const Vec3& p, double radius, std::vector<int>* out) const {
+void EmbreeLocator::TrianglesNearPoint(int /*key*/, const Vec3& p, double radius, std::vector<int>* out) const {
   RTCPointQuery query;
   query.x = static_cast<float>(p.x());
   query.y = static_cast<float>(p.y());

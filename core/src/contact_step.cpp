@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "dymesh/core/parallel.h"
+
 namespace dymesh {
 
 void ContactDiagnostics::Add(const ContactDiagnostics& o) {
@@ -29,6 +31,7 @@ struct ContactEngine::PassFrame {
   Mat3 r_slave_to_master;   // slave body -> master body
   Vec3 t_slave_to_master;   // slave CG in the master frame
   bool share;               // split the penetration by theta (else the slave restores all of it)
+  double mu;                // contact friction coefficient of the pair
 
   Vec3 ToMaster(const Vec3& p_slave) const { return r_slave_to_master * p_slave + t_slave_to_master; }
 
@@ -93,6 +96,7 @@ bool ContactEngine::BoundsOverlap(int a, int b) const {
 }
 
 StepResult ContactEngine::Step(double dt) {
+  FloatModeScope float_mode;
   const int n = body_count();
   std::vector<Vec3> force_earth(n, Vec3::Zero()), moment_earth(n, Vec3::Zero());
   StepResult result;
@@ -132,66 +136,103 @@ StepResult ContactEngine::Step(double dt) {
   return result;
 }
 
+std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, const std::vector<int>& touching) {
+  // slave nodes inside the master's bounds grown by the search reach, in chunks, in index order
+  const double reach = options_.search_backoff + options_.toofar_maximum;
+  const Vec3 lo = bounds_min_[master].array() - reach, hi = bounds_max_[master].array() + reach;
+  const std::size_t nv = f.slave->vertices.size();
+  std::vector<std::vector<int>> inside(ChunkCount(nv));
+  ForEachChunk(nv, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      const Vec3 p = f.ToMaster(f.slave->vertices[v]);
+      if ((p.array() >= lo.array()).all() && (p.array() <= hi.array()).all()) {
+        inside[chunk].push_back(static_cast<int>(v));
+      }
+    }
+  });
+  // plus the nodes touching the master at their last update (they may have left the bounds)
+  std::vector<int> culled, merged;
+  for (const auto& list : inside) culled.insert(culled.end(), list.begin(), list.end());
+  std::set_union(culled.begin(), culled.end(), touching.begin(), touching.end(), std::back_inserter(merged));
+  return merged;
+}
+
+void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const {
+  // locate, then restore and evaluate the node law
+  Located hit;
+  const bool found = LocateNode(f, v, &out->scratch, &hit);
+  if (found) ++out->diag.located;
+  if (!found && !was_touching) return;
+  const Vec3 old_position = f.slave->vertices[v];
+  Vec3 dir_slave;
+  const double node_force =
+      RestoreNode(f, v, found ? &hit : nullptr, was_touching, dt, &out->diag, &out->crush_energy, &dir_slave);
+  if (f.slave->vertices[v] != old_position) out->moved.push_back(v);
+  if (node_force <= 0.0) return;
+  out->touching.push_back(v);
+  ++out->diag.touching;
+
+  // node force on the slave along its pushback direction, friction against the sliding on the
+  // master surface (spec §7)
+  const Vec3 dir_earth = f.r_master * hit.dir;
+  const Vec3 normal_earth = f.r_master * f.master->tri_normal[hit.triangle];
+  Vec3 force = node_force * dir_earth;
+  const Vec3 v_rel = f.r_master * hit.rel_velocity;
+  const Vec3 v_slide = v_rel - v_rel.dot(normal_earth) * normal_earth;
+  const double slide = v_slide.norm();
+  if (f.mu > 0.0 && slide > options_.friction_null_band) {
+    force -= (f.mu * node_force / slide) * v_slide;
+    out->sums.friction_energy += f.mu * node_force * slide * dt;
+  }
+  // determinism: within a chunk, sums run in ascending node order
+  out->sums.touching_area += f.slave->node_area[v];
+  out->sums.force_slave += force;
+  out->sums.moment_slave += (f.r_slave * f.slave->vertices[v]).cross(force);
+  out->sums.moment_master -= (f.r_master * hit.point).cross(force);
+}
+
 ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>* touching,
                                               double dt, ContactDiagnostics* diag) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
-              Mat3::Identity(), Vec3::Zero(), share};
+              Mat3::Identity(), Vec3::Zero(), share,
+              0.5 * (models_[master]->friction + models_[slave]->friction)};
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
-  const double mu = 0.5 * (f.master_model->friction + f.slave_model->friction);
 
-  // cull: slave nodes inside the master's bounds grown by the search reach, plus nodes touching it
-  const double reach = options_.search_backoff + options_.toofar_maximum;
-  const Vec3 lo = bounds_min_[master].array() - reach, hi = bounds_max_[master].array() + reach;
-  std::vector<int> candidates;
-  const int nv = static_cast<int>(f.slave->vertices.size());
-  for (int v = 0; v < nv; ++v) {
-    const Vec3 p = f.ToMaster(f.slave->vertices[v]);
-    if ((p.array() >= lo.array()).all() && (p.array() <= hi.array()).all()) candidates.push_back(v);
-  }
-  std::vector<int> merged;
-  std::set_union(candidates.begin(), candidates.end(), touching->begin(), touching->end(),
-                 std::back_inserter(merged));
-  diag->candidates += static_cast<long long>(merged.size());
+  const std::vector<int> candidates = CullCandidates(f, master, *touching);
+  diag->candidates += static_cast<long long>(candidates.size());
+  locators_[master]->Prepare(slave, step_index_, candidates,
+                             [&](int v) { return f.ToMaster(f.slave->vertices[v]); });
 
+  // one parallel loop over fixed chunks of candidates; each chunk writes its own nodes and partials
+  chunks_.resize(std::max(chunks_.size(), ChunkCount(candidates.size())));
+  const std::vector<int>& was = *touching;
+  ForEachChunk(candidates.size(), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    ChunkSums& out = chunks_[chunk];
+    out.Clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      const int v = candidates[i];
+      ProcessNode(f, v, std::binary_search(was.begin(), was.end(), v), dt, &out);
+    }
+  });
+
+  // determinism: partial sums and node lists folded serially in chunk order
   PassSums sums;
   sums.master = master;
   sums.slave = slave;
-  std::vector<int> now_touching, moved, scratch;
-  const std::vector<int>& was = *touching;
-  for (int v : merged) {
-    // locate, then restore and evaluate the node law
-    Located hit;
-    const bool found = LocateNode(f, v, &scratch, &hit);
-    if (found) ++diag->located;
-    const bool was_touching = std::binary_search(was.begin(), was.end(), v);
-    if (!found && !was_touching) continue;
-    const Vec3 old_position = f.slave->vertices[v];
-    Vec3 dir_slave;
-    const double node_force = RestoreNode(f, v, found ? &hit : nullptr, was_touching, dt, diag, &dir_slave);
-    if (f.slave->vertices[v] != old_position) moved.push_back(v);
-    if (node_force <= 0.0) continue;
-    now_touching.push_back(v);
-    ++diag->touching;
-
-    // node force on the slave along its pushback direction, friction against the sliding on the
-    // master surface (spec §7)
-    const Vec3 dir_earth = f.r_master * hit.dir;
-    const Vec3 normal_earth = f.r_master * f.master->tri_normal[hit.triangle];
-    Vec3 force = node_force * dir_earth;
-    const Vec3 v_rel = f.r_master * hit.rel_velocity;
-    const Vec3 v_slide = v_rel - v_rel.dot(normal_earth) * normal_earth;
-    const double slide = v_slide.norm();
-    if (mu > 0.0 && slide > options_.friction_null_band) {
-      force -= (mu * node_force / slide) * v_slide;
-      sums.friction_energy += mu * node_force * slide;
-    }
-    // determinism: sums run in ascending node order within a fixed pass order
-    sums.touching_area += f.slave->node_area[v];
-    sums.force_slave += force;
-    sums.moment_slave += (f.r_slave * f.slave->vertices[v]).cross(force);
-    sums.moment_master -= (f.r_master * hit.point).cross(force);
+  std::vector<int> now_touching, moved;
+  for (std::size_t c = 0; c < ChunkCount(candidates.size()); ++c) {
+    const ChunkSums& part = chunks_[c];
+    sums.force_slave += part.sums.force_slave;
+    sums.moment_slave += part.sums.moment_slave;
+    sums.moment_master += part.sums.moment_master;
+    sums.touching_area += part.sums.touching_area;
+    sums.friction_energy += part.sums.friction_energy;
+    f.slave->crush_energy += part.crush_energy;
+    diag->Add(part.diag);
+    now_touching.insert(now_touching.end(), part.touching.begin(), part.touching.end());
+    moved.insert(moved.end(), part.moved.begin(), part.moved.end());
   }
   *touching = std::move(now_touching);
 
@@ -201,7 +242,6 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
     RefreshBounds(slave);
     locators_[slave]->Update(f.slave->vertices);
   }
-  sums.friction_energy *= dt;
   return sums;
 }
 
@@ -281,9 +321,9 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris
   tris->clear();
   const Vec3 origin = p - backoff * dir;
   if (poly_normal) {
-    f.master_locator->TrianglesNearPoint(p, std::max(backoff, reach), tris);
+    f.master_locator->TrianglesNearPoint(v, p, std::max(backoff, reach), tris);
   } else {
-    f.master_locator->TrianglesAlongSegment(origin, dir, backoff + reach, tris);
+    f.master_locator->TrianglesAlongSegment(v, origin, dir, backoff + reach, tris);
   }
   std::sort(tris->begin(), tris->end());
   tris->erase(std::unique(tris->begin(), tris->end()), tris->end());
@@ -300,7 +340,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris
 }
 
 double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
-                                  ContactDiagnostics* diag, Vec3* dir_slave) {
+                                  ContactDiagnostics* diag, double* crush_energy, Vec3* dir_slave) const {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
   const Stiffness& k = m.VertexStiffness(v);
@@ -386,7 +426,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       touching ? area * NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_) : 0.0;
 
   // work of the node law over the deflection change, then commit the new position
-  s.crush_energy += area * NodeLawWork(s.unload[v], k, deflection, new_deflection, s.delta_max[v], e, options_);
+  *crush_energy += area * NodeLawWork(s.unload[v], k, deflection, new_deflection, s.delta_max[v], e, options_);
   s.node_force[v] = force;
   s.node_area[v] = area;
   s.delta[v] = delta;

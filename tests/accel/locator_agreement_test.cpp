@@ -35,8 +35,8 @@ TEST(LocatorAgreement, EmbreeFindsEveryTriangleTheOracleFinds) {
     const Vec3 origin(box(rng), box(rng) * 0.5, box(rng) * 0.4);
     const Vec3 dir = Vec3(unit(rng), unit(rng), unit(rng)).normalized();
     std::vector<int> exact, fast;
-    brute.TrianglesAlongSegment(origin, dir, 0.3, &exact);
-    embree.TrianglesAlongSegment(origin, dir, 0.3, &fast);
+    brute.TrianglesAlongSegment(i, origin, dir, 0.3, &exact);
+    embree.TrianglesAlongSegment(i, origin, dir, 0.3, &fast);
     std::sort(fast.begin(), fast.end());
     for (int t : exact) EXPECT_TRUE(std::binary_search(fast.begin(), fast.end(), t)) << "segment " << i;
     hits += static_cast<int>(exact.size());

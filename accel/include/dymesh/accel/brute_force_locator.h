@@ -9,9 +9,9 @@ class BruteForceLocator final : public Locator {
  public:
   explicit BruteForceLocator(const TriMesh& mesh);
   void Update(const std::vector<Vec3>& vertices) override;
-  void TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, double length,
+  void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
                              std::vector<int>* out) const override;
-  void TrianglesNearPoint(const Vec3& p, double radius, std::vector<int>* out) const override;
+  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const override;
 
  private:
   std::vector<std::array<int, 3>> triangles_;

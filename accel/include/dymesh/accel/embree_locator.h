@@ -31,9 +31,9 @@ class EmbreeLocator final : public Locator {
   EmbreeLocator& operator=(const EmbreeLocator&) = delete;
 
   void Update(const std::vector<Vec3>& vertices) override;
-  void TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, double length,
+  void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
                              std::vector<int>* out) const override;
-  void TrianglesNearPoint(const Vec3& p, double radius, std::vector<int>* out) const override;
+  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const override;
 
  private:
   void CopyVertices(const std::vector<Vec3>& vertices);

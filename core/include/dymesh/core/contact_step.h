@@ -69,15 +69,32 @@ class ContactEngine {
     double touching_area = 0.0;   // [m^2] of slave nodes carrying force
     double friction_energy = 0.0; // [J] dissipated by friction over the step
   };
+  // what one chunk of slave nodes produced (folded in chunk order); buffers reused across passes
+  struct ChunkSums {
+    PassSums sums;
+    ContactDiagnostics diag;
+    double crush_energy = 0.0;            // [J] node-law work on the slave's nodes
+    std::vector<int> touching, moved;     // ascending node indices
+    std::vector<int> scratch;             // candidate triangles of one node
+    void Clear() {
+      sums = PassSums{};
+      diag = ContactDiagnostics{};
+      crush_energy = 0.0;
+      touching.clear();
+      moved.clear();
+    }
+  };
   PassSums RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt,
                    ContactDiagnostics* diag);
+  std::vector<int> CullCandidates(const PassFrame& f, int master, const std::vector<int>& touching);
+  void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const;
   void AddPairLoads(const std::vector<PassSums>& sums, std::vector<Vec3>* force_earth,
                     std::vector<Vec3>* moment_earth);
   bool LocateNode(const PassFrame& f, int v, std::vector<int>* scratch, Located* out) const;
   bool ExamineTriangle(const PassFrame& f, int t, const Vec3& p, const Vec3& ray_dir, bool poly_normal,
                        const Located* best, Located* out) const;
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
-                     ContactDiagnostics* diag, Vec3* pushback_dir_slave);
+                     ContactDiagnostics* diag, double* crush_energy, Vec3* pushback_dir_slave) const;
   bool BoundsOverlap(int a, int b) const;
   void RefreshBounds(int body);
 
@@ -85,7 +102,8 @@ class ContactEngine {
   std::vector<BodyState> states_;
   std::vector<std::unique_ptr<Locator>> locators_;
   std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame bounds of the current vertices, per body
-  std::vector<std::array<std::vector<int>, 2>> touching_;  // per pair (a<b): nodes of a, of b touching the other
+  std::vector<std::array<std::vector<int>, 2>> touching_;
+  std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop  // per pair (a<b): nodes of a, of b touching the other
   ContactOptions options_;
   int step_index_ = 0;
 };

@@ -18,14 +18,24 @@ class Locator {
   /// Takes the master's current body-frame vertices after crush (refit); orchestrating thread only.
   virtual void Update(const std::vector<Vec3>& vertices) = 0;
 
-  /// Appends the triangles the segment origin + t dir, t in [0, length], passes through.
+  /// Announces the nodes of body `slave_body` (vertex indices `keys`, ascending) that the coming pass
+  /// will locate in this body at step `step`; `position(key)` is a node's position in this body's
+  /// frame. Locators that keep per-node lists (the neighbour-box search) refresh them here.
+  /// Orchestrating thread only. The default does nothing.
+  virtual void Prepare(int slave_body, int step, const std::vector<int>& keys,
+                       const std::function<Vec3(int)>& position) {
+    (void)slave_body, (void)step, (void)keys, (void)position;
+  }
+
+  /// Appends the triangles the segment origin + t dir, t in [0, length], passes through; `key` is
+  /// the slave vertex the segment belongs to (as announced by Prepare).
   /// Threading: const and safe from many threads after Update. Determinism: order unspecified.
-  virtual void TrianglesAlongSegment(const Vec3& origin, const Vec3& dir, double length,
+  virtual void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
                                      std::vector<int>* out) const = 0;
 
-  /// Appends the triangles that come within `radius` of point p.
+  /// Appends the triangles that come within `radius` of point p (slave vertex `key`).
   /// Threading: const and safe from many threads after Update. Determinism: order unspecified.
-  virtual void TrianglesNearPoint(const Vec3& p, double radius, std::vector<int>* out) const = 0;
+  virtual void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const = 0;
 };
 
 /// Makes a locator for a body's mesh (the rest mesh; Update follows crush).
