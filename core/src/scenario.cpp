@@ -380,7 +380,7 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
             {"passes_per_step", "search_direction", "specified_direction", "stop_rule", "version", "null_band",
              "pushback_reduction", "pushback_reduce_limit", "toofar_margin", "toofar_maximum", "search_backoff",
              "unload_begin", "unload_pot", "unload_stop", "max_grow_unload", "friction_null_band", "rebound_law",
-             "calc_nabor_interval", "contact_tolerance"});
+             "calc_nabor_interval", "contact_tolerance", "global_search_box"});
   const double length = src.units.length;
   // integers and choices
   if (const Json* v = Find(j, "passes_per_step"))
@@ -417,7 +417,8 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
       {"null_band", &o->null_band},           {"pushback_reduce_limit", &o->pushback_reduce_limit},
       {"toofar_margin", &o->toofar_margin},   {"unload_begin", &o->unload_begin},
       {"unload_pot", &o->unload_pot},         {"unload_stop", &o->unload_stop},
-      {"max_grow_unload", &o->max_grow_unload}, {"contact_tolerance", &o->contact_tolerance}};
+      {"max_grow_unload", &o->max_grow_unload}, {"contact_tolerance", &o->contact_tolerance},
+      {"global_search_box", &o->global_search_box}};
   for (const auto& [key, target] : lengths)
     if (const Json* v = Find(j, key)) *target = ReadNumber(src, *v, Join(path, key), kNonNegative) * length;
   if (const Json* v = Find(j, "toofar_maximum"))

@@ -41,6 +41,7 @@ struct ContactOptions {
   ReboundLaw rebound_law = ReboundLaw::kScaled;
   Eigen::Vector3d specified_direction{-1.0, 0.0, 0.0};       ///< pushback direction in the slave body frame (kSpecified)
   int calc_nabor_interval = 5;                               ///< CALC_NABOR_INTERVAL (neighbour-box locator)
+  double global_search_box = 0.0;                            ///< [m] GLOBAL_SEARCH_BOX half-size; 0 = SetBoxSize (automatic)
 };
 
 }  // namespace dymesh
