@@ -15,14 +15,11 @@ void BruteForceLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, c
   // every triangle whose plane the segment crosses inside the triangle, in double precision
   const double slack = 1e-9 * (1.0 + length);
   for (size_t t = 0; t < triangles_.size(); ++t) {
-    const Vec3& a = vertices_[triangles_[t][0]];
-    const Vec3& b = vertices_[triangles_[t][1]];
-    const Vec3& c = vertices_[triangles_[t][2]];
-    const Vec3 n = TriangleCross(a, b, c).normalized();
     double dist = 0.0;
-    if (!std::isfinite(n.x()) || !RayPlaneDistance(origin, dir, a, n, &dist)) continue;
-    if (dist < -slack || dist > length + slack) continue;
-    if (InsideTriangleCrossProduct(origin + dist * dir, a, b, c, n)) out->push_back(static_cast<int>(t));
+    if (SegmentCrossesTriangle(origin, dir, length, vertices_[triangles_[t][0]], vertices_[triangles_[t][1]],
+                               vertices_[triangles_[t][2]], slack, &dist)) {
+      out->push_back(static_cast<int>(t));
+    }
   }
 }
 

@@ -132,14 +132,11 @@ void NeighborBoxLocator::TrianglesAlongSegment(int key, const Vec3& origin, cons
   // the node's NaborSurf list, each surface tested exactly (segment-plane crossing, inside test)
   const double slack = 1e-9 * (1.0 + length);
   for (int t : lists_[prepared_body_][key].surfaces) {
-    const Vec3& a = vertices_[triangles_[t][0]];
-    const Vec3& b = vertices_[triangles_[t][1]];
-    const Vec3& c = vertices_[triangles_[t][2]];
-    const Vec3 n = TriangleCross(a, b, c).normalized();
     double dist = 0.0;
-    if (!std::isfinite(n.x()) || !RayPlaneDistance(origin, dir, a, n, &dist)) continue;
-    if (dist < -slack || dist > length + slack) continue;
-    if (InsideTriangleCrossProduct(origin + dist * dir, a, b, c, n)) out->push_back(t);
+    if (SegmentCrossesTriangle(origin, dir, length, vertices_[triangles_[t][0]], vertices_[triangles_[t][1]],
+                               vertices_[triangles_[t][2]], slack, &dist)) {
+      out->push_back(t);
+    }
   }
 }
 

@@ -27,6 +27,15 @@ bool RayPlaneDistance(const Vec3& origin, const Vec3& dir, const Vec3& a, const 
   return true;
 }
 
+bool SegmentCrossesTriangle(const Vec3& origin, const Vec3& dir, double length, const Vec3& a, const Vec3& b,
+                            const Vec3& c, double slack, double* t) {
+  // plane crossing within the (slightly widened) segment, then the inside test at the crossing
+  const Vec3 n = TriangleCross(a, b, c).normalized();
+  if (!std::isfinite(n.x()) || !RayPlaneDistance(origin, dir, a, n, t)) return false;
+  if (*t < -slack || *t > length + slack) return false;
+  return InsideTriangleCrossProduct(origin + *t * dir, a, b, c, n);
+}
+
 Mat3 BodyToEarth(double roll, double pitch, double yaw) {
   // spec §8 Amtx: yaw about z, then pitch about y, then roll about x (SAE, z down)
   const double cf = std::cos(roll), sf = std::sin(roll);

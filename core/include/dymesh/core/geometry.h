@@ -22,6 +22,11 @@ bool InsideTriangleCrossProduct(const Vec3& q, const Vec3& a, const Vec3& b, con
 /// returns false when the ray is (nearly) parallel to the plane.
 bool RayPlaneDistance(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& n, double* t);
 
+/// The exact candidate test of the locators: the segment origin + t dir, t in [-slack, length + slack],
+/// crosses the plane of triangle abc inside the triangle (cross-product test). Sets *t when true.
+bool SegmentCrossesTriangle(const Vec3& origin, const Vec3& dir, double length, const Vec3& a, const Vec3& b,
+                            const Vec3& c, double slack, double* t);
+
 /// Euler-angle DCM (spec §8, Amtx): maps body-frame vectors to the earth frame,
 /// R = Rz(yaw) * Ry(pitch) * Rx(roll), SAE axes (x forward, y right, z down).
 Mat3 BodyToEarth(double roll, double pitch, double yaw);
