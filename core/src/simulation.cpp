@@ -45,10 +45,12 @@ Simulation::Simulation(const Scenario& scenario, const LocatorFactory& make_loca
   Record(nullptr);
 }
 
-void Simulation::Run(const std::function<void(double)>& on_step) {
+bool Simulation::Run(const std::function<bool(double)>& on_step) {
+  // the caller may stop between steps (e.g. on Ctrl-C); the state stays consistent
   while (Advance()) {
-    if (on_step) on_step(time_);
+    if (on_step && !on_step(time_)) return false;
   }
+  return finished_;
 }
 
 bool Simulation::Advance() {

@@ -29,8 +29,9 @@ class Simulation {
  public:
   Simulation(const Scenario& scenario, const LocatorFactory& make_locator);
 
-  /// Runs to the scenario's duration (or separation); `on_step(time)` is called after each step.
-  void Run(const std::function<void(double)>& on_step = {});
+  /// Runs to the scenario's duration (or separation). `on_step(time)` is called after each step;
+  /// returning false stops the run there. Returns true when the run reached its end.
+  bool Run(const std::function<bool(double)>& on_step = {});
 
   /// Advances one step; returns false once finished.
   bool Advance();
@@ -40,6 +41,8 @@ class Simulation {
   const std::vector<Sample>& history() const { return history_; }
   const ContactDiagnostics& diagnostics() const { return diagnostics_; }
   int steps() const { return steps_; }
+  /// True once the run reached its duration or separation (false while running or when stopped early).
+  bool finished() const { return finished_; }
   double time() const { return time_; }
   double first_contact_time() const { return first_contact_time_; }
   double last_contact_time() const { return last_contact_time_; }
