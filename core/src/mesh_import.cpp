@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 
 namespace dymesh {
@@ -158,27 +159,64 @@ TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file
   return mesh;
 }
 
-void WriteObj(const TriMesh& mesh, const std::string& path, const std::string& comment) {
+namespace {
+
+// writes `body` into `path` through a temporary file renamed into place
+void WriteThroughTemporary(const std::string& path, const std::function<void(std::FILE*)>& body) {
   const std::string tmp = path + ".tmp";
-  // write under a temporary name
   std::FILE* f = std::fopen(tmp.c_str(), "w");
   if (f == nullptr) FailWrite(path, "cannot open " + tmp);
-  // comment lines (each line of the comment prefixed with '#')
-  std::fputs("# ", f);
-  for (char c : comment) {
-    if (c == '\n')
-      std::fputs("\n# ", f);
-    else
-      std::fputc(c, f);
-  }
-  std::fputc('\n', f);
-  // vertices and 1-based faces
-  for (const Vec3& p : mesh.vertices) std::fprintf(f, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
-  for (const auto& t : mesh.triangles) std::fprintf(f, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+  body(f);
   const bool write_error = std::ferror(f) != 0;
   if (std::fclose(f) != 0 || write_error) FailWrite(path, "write error on " + tmp);
-  // rename into place
   if (std::rename(tmp.c_str(), path.c_str()) != 0) FailWrite(path, "cannot rename " + tmp);
+}
+
+// each line of `comment` after `prefix` ("# " for OBJ, "comment " for PLY)
+void WriteComment(std::FILE* f, const std::string& prefix, const std::string& comment) {
+  std::fputs(prefix.c_str(), f);
+  for (char c : comment) {
+    if (c == '\n') {
+      std::fputc('\n', f);
+      std::fputs(prefix.c_str(), f);
+    } else {
+      std::fputc(c, f);
+    }
+  }
+  std::fputc('\n', f);
+}
+
+}  // namespace
+
+void WriteObj(const TriMesh& mesh, const std::string& path, const std::string& comment) {
+  WriteThroughTemporary(path, [&](std::FILE* f) {
+    // comment lines, vertices and 1-based faces
+    WriteComment(f, "# ", comment);
+    for (const Vec3& p : mesh.vertices) std::fprintf(f, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+    for (const auto& t : mesh.triangles) std::fprintf(f, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+  });
+}
+
+void WritePly(const TriMesh& mesh, const std::vector<double>& crush, const std::vector<Rgb>& colours,
+              const std::string& path, const std::string& comment) {
+  if (crush.size() != mesh.vertices.size() || colours.size() != mesh.vertices.size())
+    throw std::invalid_argument("WritePly: one crush value and one colour per vertex expected (" + path + ")");
+  WriteThroughTemporary(path, [&](std::FILE* f) {
+    // header: vertex position, crush scalar and colour; faces as index lists
+    std::fputs("ply\nformat ascii 1.0\n", f);
+    WriteComment(f, "comment ", comment);
+    std::fprintf(f, "element vertex %zu\n", mesh.vertices.size());
+    std::fputs("property float x\nproperty float y\nproperty float z\nproperty float crush\n", f);
+    std::fputs("property uchar red\nproperty uchar green\nproperty uchar blue\n", f);
+    std::fprintf(f, "element face %zu\nproperty list uchar int vertex_indices\nend_header\n", mesh.triangles.size());
+    // body
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      const Vec3& p = mesh.vertices[v];
+      std::fprintf(f, "%.9g %.9g %.9g %.9g %d %d %d\n", p.x(), p.y(), p.z(), crush[v], colours[v].r, colours[v].g,
+                   colours[v].b);
+    }
+    for (const auto& t : mesh.triangles) std::fprintf(f, "3 %d %d %d\n", t[0], t[1], t[2]);
+  });
 }
 
 }  // namespace dymesh

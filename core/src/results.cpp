@@ -7,28 +7,37 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dymesh/core/colour_map.h"
 #include "dymesh/core/mesh_import.h"
+#include "dymesh/core/report.h"
+#include "dymesh/core/svg_plot.h"
 #include "dymesh/core/units.h"
 
 namespace dymesh {
+
+OutputUnits UnitsOf(UnitSystem system) {
+  if (system == UnitSystem::kSI) return {1, 1, 1, 1, 1, 1, 1, "m", "m/s", "N", "N*m", "J", "kg*m/s", "kg"};
+  return {1 / units::kInch, 1 / units::kMph, 1 / units::kPoundForce, 1 / (units::kPoundForce * units::kInch),
+          1 / (units::kPoundForce * units::kFoot), 1 / (units::kPoundForce), 1 / units::kPoundMass,
+          "in", "mph", "lbf", "lbf*in", "ft*lbf", "lbf*s", "lb"};
+}
+
 namespace {
 
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
-// output units of one unit system: factor from SI and the label
-struct OutputUnits {
-  double length, speed, force, moment, energy, momentum;
-  const char *length_name, *speed_name, *force_name, *moment_name, *energy_name, *momentum_name;
-};
-
-OutputUnits UnitsOf(UnitSystem system) {
-  if (system == UnitSystem::kSI) return {1, 1, 1, 1, 1, 1, "m", "m/s", "N", "N*m", "J", "kg*m/s"};
-  return {1 / units::kInch, 1 / units::kMph, 1 / units::kPoundForce, 1 / (units::kPoundForce * units::kInch),
-          1 / (units::kPoundForce * units::kFoot), 1 / (units::kPoundForce),
-          "in", "mph", "lbf", "lbf*in", "ft*lbf", "lbf*s"};
-}
-
 nlohmann::json Vector(const Vec3& v, double scale) { return {v.x() * scale, v.y() * scale, v.z() * scale}; }
+
+// C1..C6 with the damage width and stations, in output lengths
+nlohmann::json CrushProfileJson(const CrushProfile& p, double length) {
+  nlohmann::json stations = nlohmann::json::array(), crush = nlohmann::json::array();
+  for (int i = 0; i < 6; ++i) {
+    stations.push_back(p.station[i] * length);
+    crush.push_back(p.crush[i] * length);
+  }
+  return {{"face", CrushFaceName(p.face)}, {"width", p.width * length}, {"centre", p.centre * length},
+          {"stations", stations}, {"c", crush}, {"max_depth", p.max_depth * length}};
+}
 
 // integral of the body-frame collision force over the run [N s]
 Vec3 BodyImpulse(const Simulation& sim, int body) {
@@ -70,6 +79,7 @@ BodySummary SummarizeBody(const Simulation& sim, int i) {
   b.friction_energy = state.friction_energy;
   b.final_velocity = state.rigid.velocity;
   b.final_yaw_rate = state.rigid.omega.z();
+  b.crush_profile = MeasureCrushProfile(model, state);
   return b;
 }
 
@@ -109,6 +119,8 @@ Summary Summarize(const Simulation& sim) {
   sum.contact_start = sim.first_contact_time();
   sum.contact_end = sim.last_contact_time();
   sum.steps = sim.steps();
+  sum.end_time = sim.time();
+  sum.complete = sim.finished();
   sum.diagnostics = sim.diagnostics();
   return sum;
 }
@@ -137,10 +149,13 @@ nlohmann::json SummaryToJson(const Summary& s, UnitSystem system) {
         {"friction_energy", b.friction_energy * u.energy},
         {"final_velocity_earth", Vector(b.final_velocity, u.speed)},
         {"final_yaw_rate_deg_s", b.final_yaw_rate * kRadToDeg},
+        {"crush_profile", CrushProfileJson(b.crush_profile, u.length)},
     });
   }
   const ContactDiagnostics& d = s.diagnostics;
   j["overall"] = {
+      {"status", s.complete ? "complete" : "interrupted"},
+      {"end_time_s", s.end_time},
       {"momentum_before", Vector(s.momentum_before, u.momentum)},
       {"momentum_after", Vector(s.momentum_after, u.momentum)},
       {"kinetic_energy_before", s.kinetic_before * u.energy},
@@ -191,20 +206,23 @@ std::string HistoryCsv(const Simulation& sim) {
         << n << "ax_body[g]," << n << "ay_body[g]," << n << "az_body[g],"
         << n << "fx_body[" << u.force_name << "]," << n << "fy_body[" << u.force_name << "]," << n << "fz_body["
         << u.force_name << "]," << n << "mz_body[" << u.moment_name << "]," << n << "crush_energy["
-        << u.energy_name << "]," << n << "friction_energy[" << u.energy_name << "]";
+        << u.energy_name << "]," << n << "friction_energy[" << u.energy_name << "]," << n << "kinetic_energy["
+        << u.energy_name << "]";
   }
   csv << '\n';
   const double g = units::kStandardGravity;
   for (const Sample& s : sim.history()) {
     csv << s.time;
-    for (const BodySample& b : s.bodies) {
+    for (int i = 0; i < sim.engine().body_count(); ++i) {
+      const BodySample& b = s.bodies[i];
       csv << ',' << b.rigid.position.x() * u.length << ',' << b.rigid.position.y() * u.length << ','
           << b.rigid.yaw * kRadToDeg << ',' << b.rigid.velocity.x() * u.speed << ','
           << b.rigid.velocity.y() * u.speed << ',' << b.rigid.omega.z() * kRadToDeg << ','
           << b.accel_body.x() / g << ',' << b.accel_body.y() / g << ',' << b.accel_body.z() / g << ','
           << b.loads.force_body.x() * u.force << ',' << b.loads.force_body.y() * u.force << ','
           << b.loads.force_body.z() * u.force << ',' << b.loads.moment_body.z() * u.moment << ','
-          << b.crush_energy * u.energy << ',' << b.friction_energy * u.energy;
+          << b.crush_energy * u.energy << ',' << b.friction_energy * u.energy << ','
+          << KineticEnergy(sim.engine().model(i), b.rigid) * u.energy;
     }
     csv << '\n';
   }
@@ -213,34 +231,87 @@ std::string HistoryCsv(const Simulation& sim) {
 
 }  // namespace
 
-std::vector<std::string> WriteOutputs(const Simulation& sim, const Summary& summary, const std::string& dir) {
+std::vector<double> VertexCrush(const Simulation& sim, int body) {
+  const BodyState& state = sim.engine().state(body);
+  std::vector<double> crush(state.delta.size());
+  for (std::size_t v = 0; v < crush.size(); ++v) crush[v] = state.delta[v].norm();
+  return crush;
+}
+
+namespace {
+
+// writes each file unless asked to stop, recording which were written and which not
+class OutputWriter {
+ public:
+  explicit OutputWriter(const std::function<bool()>& stop) : stop_(stop) {}
+  void Emit(const std::string& path, const std::function<void()>& write) {
+    if (stop_ && stop_()) {
+      out_.not_written.push_back(path);
+      return;
+    }
+    write();
+    out_.written.push_back(path);
+  }
+  const WrittenOutputs& result() const { return out_; }
+
+ private:
+  const std::function<bool()>& stop_;
+  WrittenOutputs out_;
+};
+
+// a body's meshes: OBJ, and PLY with the crush per vertex (scenario length unit, colours on a
+// scale shared by every body of the run)
+void WriteBodyMeshes(const Simulation& sim, int i, const std::string& dir, double crush_scale, OutputWriter* writer) {
+  const OutputUnits u = UnitsOf(sim.scenario().units);
+  const BodyModel& model = sim.engine().model(i);
+  TriMesh deformed{sim.engine().state(i).vertices, model.mesh.triangles};
+  TriMesh undeformed = model.mesh;
+  for (Vec3& p : deformed.vertices) p *= u.length;
+  for (Vec3& p : undeformed.vertices) p *= u.length;
+  // crush scalar and colour per vertex
+  std::vector<double> crush = VertexCrush(sim, i);
+  std::vector<Rgb> colours;
+  for (double& c : crush) {
+    colours.push_back(CrushColour(crush_scale > 0.0 ? c / crush_scale : 0.0));
+    c *= u.length;
+  }
+  const std::string base = (std::filesystem::path(dir) / model.name).string();
+  const std::string scalar = std::string("crush: permanent crush |Delta| [") + u.length_name + "], colour scale 0 to " +
+                             FormatFixed(crush_scale * u.length, 3) + " " + u.length_name;
+  for (const auto& [suffix, mesh] : {std::pair{"_undeformed", &undeformed}, std::pair{"_deformed", &deformed}}) {
+    const std::string what = model.name + suffix + ", body frame about the CG, " + u.length_name;
+    const std::string obj = base + suffix + ".obj", ply = base + suffix + ".ply";
+    writer->Emit(obj, [&] { WriteObj(*mesh, obj, what); });
+    writer->Emit(ply, [&] { WritePly(*mesh, crush, colours, ply, what + "\n" + scalar); });
+  }
+}
+
+}  // namespace
+
+WrittenOutputs WriteOutputs(const Simulation& sim, const Summary& summary, const std::string& dir,
+                            const std::function<bool()>& stop) {
   namespace fs = std::filesystem;
   fs::create_directories(dir);
-  std::vector<std::string> written;
-  const OutputUnits u = UnitsOf(sim.scenario().units);
-  // deformed and undeformed meshes of every body (body frame about the CG, scenario length unit)
-  for (int i = 0; i < sim.engine().body_count(); ++i) {
-    const BodyModel& model = sim.engine().model(i);
-    TriMesh deformed{sim.engine().state(i).vertices, model.mesh.triangles};
-    TriMesh undeformed = model.mesh;
-    for (Vec3& p : deformed.vertices) p *= u.length;
-    for (Vec3& p : undeformed.vertices) p *= u.length;
-    const std::string base = (fs::path(dir) / model.name).string();
-    WriteObj(undeformed, base + "_undeformed.obj", model.name + " undeformed, body frame about the CG, " + u.length_name);
-    WriteObj(deformed, base + "_deformed.obj", model.name + " deformed, body frame about the CG, " + u.length_name);
-    written.push_back(base + "_undeformed.obj");
-    written.push_back(base + "_deformed.obj");
-  }
-  // time history, then the summary last: its presence means the run's outputs are complete
+  // an earlier summary must not vouch for the files about to be replaced
+  const std::string summary_path = (fs::path(dir) / "summary.json").string();
+  std::error_code ec;
+  fs::remove(summary_path, ec);
+  // meshes (crush colours on the run's largest crush)
+  OutputWriter writer(stop);
+  double crush_scale = 0.0;
+  for (const BodySummary& b : summary.bodies) crush_scale = std::max(crush_scale, b.max_crush);
+  for (int i = 0; i < sim.engine().body_count(); ++i) WriteBodyMeshes(sim, i, dir, crush_scale, &writer);
+  // time history and report, then the summary last: its presence means the outputs are complete
   const std::string history = (fs::path(dir) / "history.csv").string();
-  WriteFileAtomically(history, HistoryCsv(sim));
-  written.push_back(history);
-  nlohmann::json j = SummaryToJson(summary, sim.scenario().units);
-  j["scenario"] = {{"file", sim.scenario().file}, {"name", sim.scenario().name}};
-  const std::string path = (fs::path(dir) / "summary.json").string();
-  WriteFileAtomically(path, j.dump(2) + "\n");
-  written.push_back(path);
-  return written;
+  writer.Emit(history, [&] { WriteFileAtomically(history, HistoryCsv(sim)); });
+  const std::string report = (fs::path(dir) / "report.html").string();
+  writer.Emit(report, [&] { WriteFileAtomically(report, ReportHtml(sim, summary)); });
+  writer.Emit(summary_path, [&] {
+    nlohmann::json j = SummaryToJson(summary, sim.scenario().units);
+    j["scenario"] = {{"file", sim.scenario().file}, {"name", sim.scenario().name}};
+    WriteFileAtomically(summary_path, j.dump(2) + "\n");
+  });
+  return writer.result();
 }
 
 }  // namespace dymesh

@@ -1,10 +1,12 @@
 #pragma once
 #include <string>
+#include <vector>
 
+#include "dymesh/core/colour_map.h"
 #include "dymesh/core/mesh.h"
 #include "dymesh/core/scenario.h"
 
-/// Mesh files in (assimp: OBJ, STL, PLY, glTF, ...) and out (OBJ), and a body's mesh from its source.
+/// Mesh files in (assimp: OBJ, STL, PLY, glTF, ...) and out (OBJ, PLY), and a body's mesh from its source.
 namespace dymesh {
 
 /// Loads every triangle of a mesh file into one mesh (file units, file axes), welded.
@@ -17,5 +19,10 @@ TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file
 
 /// Writes a mesh as Wavefront OBJ, to a temporary name renamed into place.
 void WriteObj(const TriMesh& mesh, const std::string& path, const std::string& comment);
+
+/// Writes a mesh as ASCII PLY with a float property `crush` and an 8-bit colour (red, green, blue)
+/// per vertex, to a temporary name renamed into place. `crush` and `colours` have one entry per vertex.
+void WritePly(const TriMesh& mesh, const std::vector<double>& crush, const std::vector<Rgb>& colours,
+              const std::string& path, const std::string& comment);
 
 }  // namespace dymesh

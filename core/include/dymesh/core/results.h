@@ -1,13 +1,25 @@
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "dymesh/core/crush_profile.h"
 #include "dymesh/core/simulation.h"
 
 /// What a run reports: per-body delta-V, PDOF, pulse, crush and energy; overall balances.
 namespace dymesh {
+
+/// Output units of a unit system: the factor from SI and the label of each quantity
+/// (US: in, mph, lbf, lbf*in, ft*lbf, lbf*s, lb; SI: m, m/s, N, N*m, J, kg*m/s, kg).
+struct OutputUnits {
+  double length, speed, force, moment, energy, momentum, mass;
+  const char *length_name, *speed_name, *force_name, *moment_name, *energy_name, *momentum_name, *mass_name;
+};
+
+/// The output units of `system`.
+OutputUnits UnitsOf(UnitSystem system);
 
 /// Results of one body.
 struct BodySummary {
@@ -27,6 +39,7 @@ struct BodySummary {
   double friction_energy = 0.0;  ///< [J]
   Vec3 final_velocity{0, 0, 0};  ///< [m/s] earth frame
   double final_yaw_rate = 0.0;   ///< [rad/s]
+  CrushProfile crush_profile;    ///< CRASH3-style C1..C6 on the damaged face
 };
 
 /// Results of a run.
@@ -40,6 +53,8 @@ struct Summary {
   double separation_speed = 0.0;      ///< [m/s] along the impulse direction (first pair)
   double contact_start = -1.0, contact_end = -1.0;  ///< [s]
   int steps = 0;
+  double end_time = 0.0;              ///< [s] time reached
+  bool complete = true;               ///< false when the run was stopped before its end (interrupted)
   ContactDiagnostics diagnostics;
 };
 
@@ -49,9 +64,21 @@ Summary Summarize(const Simulation& sim);
 /// Summary as JSON in the scenario's unit system.
 nlohmann::json SummaryToJson(const Summary& summary, UnitSystem units);
 
-/// Writes summary.json, history.csv and the deformed and undeformed meshes (OBJ) into `dir`,
-/// each through a temporary name renamed into place. Returns the paths written.
-std::vector<std::string> WriteOutputs(const Simulation& sim, const Summary& summary, const std::string& dir);
+/// Which output files were written and which were not (when writing was stopped).
+struct WrittenOutputs {
+  std::vector<std::string> written, not_written;  ///< paths
+};
+
+/// Writes into `dir`: each body's deformed and undeformed mesh (OBJ, and PLY with the permanent
+/// crush per vertex), history.csv, report.html and, last, summary.json; each through a temporary
+/// name renamed into place. An earlier summary.json is removed first, so its presence always means
+/// that the files beside it belong to it. `stop`, when given, is asked before each file: once it
+/// returns true the remaining files are skipped (listed in `not_written`).
+WrittenOutputs WriteOutputs(const Simulation& sim, const Summary& summary, const std::string& dir,
+                            const std::function<bool()>& stop = {});
+
+/// Permanent crush |Delta| of every vertex of body i [m].
+std::vector<double> VertexCrush(const Simulation& sim, int body);
 
 /// Writes `text` to `path` atomically (temporary file, then rename).
 void WriteFileAtomically(const std::string& path, const std::string& text);
