@@ -1,45 +1,51 @@
-// The dymesh command: runs a scenario and writes its outputs. Holds no physics.
+// The dymesh command: runs or checks a scenario. Holds no physics.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
 
-#include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "commands.h"
 #include "dymesh/core/scenario.h"
-#include "dymesh/core/simulation.h"
-#include "dymesh/core/units.h"
 
 namespace {
 
-// one line per body: the figures a reconstructionist looks at first
-void PrintSummary(const dymesh::Summary& s, dymesh::UnitSystem units) {
-  const bool us = units == dymesh::UnitSystem::kUS;
-  const double speed = us ? 1 / dymesh::units::kMph : 1.0, length = us ? 1 / dymesh::units::kInch : 1.0;
-  const char* su = us ? "mph" : "m/s";
-  const char* lu = us ? "in" : "m";
-  for (const auto& b : s.bodies) {
-    std::printf("  %-16s delta-V %7.2f %s  PDOF %6.1f deg (%2d o'clock)  peak %5.1f g  max crush %6.2f %s\n",
-                b.name.c_str(), b.delta_v * speed, su, b.pdof_deg, b.pdof_clock,
-                b.peak_accel / dymesh::units::kStandardGravity, b.max_crush * length, lu);
+// stop requests received (SIGINT, SIGTERM): the command's only global state, polled between steps
+// and between output files; core never sees it
+volatile std::sig_atomic_t stop_requests = 0;
+
+// first request: stop at the next step; second: stop writing; third: die at once
+extern "C" void OnStopSignal(int signal) {
+  stop_requests = stop_requests + 1;
+  if (stop_requests >= 3) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
   }
-  std::printf("  contact %.4f-%.4f s, %d steps; energy balance error %.3f%%\n", s.contact_start, s.contact_end,
-              s.steps, 100.0 * s.energy_balance_error);
 }
 
-int Run(const std::string& scenario_path, const std::string& out_dir) {
-  const dymesh::Scenario scenario = dymesh::LoadScenario(scenario_path);
-  auto device = std::make_shared<const dymesh::EmbreeDevice>();
-  dymesh::Simulation sim(scenario, dymesh::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  const dymesh::Summary summary = dymesh::Summarize(sim);
-  const auto written = dymesh::WriteOutputs(sim, summary, out_dir);
-  std::printf("%s: %s\n", scenario.file.c_str(), scenario.name.c_str());
-  PrintSummary(summary, scenario.units);
-  std::printf("outputs in %s:\n", out_dir.c_str());
-  for (const auto& path : written) std::printf("  %s\n", path.c_str());
-  return 0;
+void InstallStopHandlers() {
+  struct sigaction action {};
+  action.sa_handler = OnStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+// runs a subcommand, turning refused input and other failures into messages and exit codes
+template <typename F>
+int Guarded(F&& command) {
+  try {
+    return command();
+  } catch (const dymesh::InputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return dymesh::cli::kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return dymesh::cli::kExitFailure;
+  }
 }
 
 }  // namespace
@@ -47,18 +53,23 @@ int Run(const std::string& scenario_path, const std::string& out_dir) {
 int main(int argc, char** argv) {
   CLI::App app{"dymesh: DyMESH mesh-based vehicle collision simulation"};
   app.require_subcommand(1);
-  std::string scenario_path, out_dir = "out";
-  CLI::App* run = app.add_subcommand("run", "simulate a scenario and write summary.json, history.csv and meshes");
-  run->add_option("scenario", scenario_path, "scenario JSON file")->required();
-  run->add_option("--out", out_dir, "output folder (created if missing)");
+  // run: simulate and write the outputs
+  dymesh::cli::RunRequest request;
+  CLI::App* run = app.add_subcommand(
+      "run", "simulate a scenario; write summary.json, history.csv, report.html and meshes (OBJ, PLY)");
+  run->add_option("scenario", request.scenario_path, "scenario JSON file")->required();
+  run->add_option("--out", request.out_dir, "output folder (created if missing)");
+  run->add_flag("-q,--quiet", request.quiet, "print nothing but errors (no progress, no summary)");
+  // check: validate without running
+  std::string check_path;
+  CLI::App* check = app.add_subcommand("check", "validate a scenario and its meshes without running; print mesh statistics");
+  check->add_option("scenario", check_path, "scenario JSON file")->required();
   CLI11_PARSE(app, argc, argv);
-  try {
-    return Run(scenario_path, out_dir);
-  } catch (const dymesh::InputError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
-  }
+
+  if (*check) return Guarded([&] { return dymesh::cli::CheckCommand(check_path, std::cout); });
+  request.terminal = isatty(STDOUT_FILENO) != 0;
+  InstallStopHandlers();
+  return Guarded([&] {
+    return dymesh::cli::RunCommand(request, [] { return static_cast<int>(stop_requests); }, std::cout, std::cerr);
+  });
 }

@@ -1,0 +1,30 @@
+#pragma once
+#include <functional>
+#include <ostream>
+#include <string>
+
+/// The dymesh subcommands, callable from main() and from tests. They hold no physics.
+namespace dymesh::cli {
+
+/// Exit codes: 0 done, 1 failure (e.g. cannot write), 2 refused input, 130 interrupted.
+inline constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitInterrupted = 130;
+
+/// What `dymesh run` was asked to do.
+struct RunRequest {
+  std::string scenario_path;
+  std::string out_dir = "out";
+  bool quiet = false;     ///< no progress, no summary: errors only
+  bool terminal = false;  ///< `out` is a terminal (progress bar rather than periodic lines)
+};
+
+/// Runs a scenario and writes its outputs. `interrupts()` counts the stop requests received so far
+/// (Ctrl-C): the first stops the run at the next step, its outputs so far are written (summary
+/// status "interrupted"); another one stops the writing between files. Throws InputError on bad input.
+int RunCommand(const RunRequest& request, const std::function<int()>& interrupts, std::ostream& out,
+               std::ostream& err);
+
+/// Validates a scenario and its meshes without running and prints what it found (mesh statistics
+/// in the scenario's units, body surfaces). Throws InputError on bad input.
+int CheckCommand(const std::string& scenario_path, std::ostream& out);
+
+}  // namespace dymesh::cli

@@ -1,0 +1,87 @@
+// dymesh run: simulate, report progress, write the outputs; stops cleanly when interrupted.
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include "commands.h"
+#include "dymesh/accel/embree_locator.h"
+#include "dymesh/core/results.h"
+#include "dymesh/core/scenario.h"
+#include "dymesh/core/simulation.h"
+#include "dymesh/core/units.h"
+#include "progress.h"
+
+namespace dymesh::cli {
+namespace {
+
+// printf into a string
+template <typename... Args>
+std::string Format(const char* format, Args... args) {
+  char text[512];
+  std::snprintf(text, sizeof text, format, args...);
+  return text;
+}
+
+// one line per body: the figures a reconstructionist looks at first
+void PrintSummary(const Summary& s, UnitSystem system, std::ostream& out) {
+  const OutputUnits u = UnitsOf(system);
+  for (const BodySummary& b : s.bodies)
+    out << Format("  %-16s delta-V %7.2f %s  PDOF %6.1f deg (%2d o'clock)  peak %5.1f g  max crush %6.2f %s\n",
+                  b.name.c_str(), b.delta_v * u.speed, u.speed_name, b.pdof_deg, b.pdof_clock,
+                  b.peak_accel / units::kStandardGravity, b.max_crush * u.length, u.length_name);
+  out << Format("  contact %.4f-%.4f s, %d steps; energy balance error %.3f%%\n", s.contact_start, s.contact_end,
+                s.steps, 100.0 * s.energy_balance_error);
+}
+
+// the list of files, and of those an interruption left unwritten
+void PrintOutputs(const WrittenOutputs& w, const std::string& dir, bool quiet, std::ostream& out, std::ostream& err) {
+  if (!quiet) {
+    out << "outputs in " << dir << ":\n";
+    for (const std::string& path : w.written) out << "  " << path << "\n";
+  }
+  if (w.not_written.empty()) return;
+  err << "not written (interrupted):\n";
+  for (const std::string& path : w.not_written) err << "  " << path << "\n";
+}
+
+}  // namespace
+
+int RunCommand(const RunRequest& request, const std::function<int()>& interrupts, std::ostream& out,
+               std::ostream& err) {
+  const Scenario scenario = LoadScenario(request.scenario_path);
+  auto device = std::make_shared<const EmbreeDevice>();
+  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  // simulate, with progress, until done or interrupted
+  ProgressReporter::Options options;
+  options.terminal = request.terminal;
+  std::ostringstream discard;
+  ProgressReporter progress(request.quiet ? static_cast<std::ostream&>(discard) : out, scenario.duration, options);
+  const bool finished = sim.Run([&](double time) {
+    progress.Update(time, sim.steps());
+    return interrupts() == 0;
+  });
+  progress.Finish();
+  const int stops = interrupts();
+  const Summary summary = Summarize(sim);
+  if (!finished) {
+    const int planned = static_cast<int>(scenario.duration / scenario.time_step + 0.5);
+    err << Format("interrupted at t = %.4f s (%d of %d steps): writing the outputs of the run so far "
+                  "(summary.json \"status\": \"interrupted\"); interrupt again to stop writing\n",
+                  sim.time(), sim.steps(), planned);
+  }
+  // outputs; a further interruption stops between files
+  const WrittenOutputs written = WriteOutputs(sim, summary, request.out_dir, [&] { return interrupts() > stops; });
+  if (!request.quiet) {
+    out << scenario.file << ": " << scenario.name << (finished ? "" : " (interrupted)") << "\n";
+    PrintSummary(summary, scenario.units, out);
+  }
+  PrintOutputs(written, request.out_dir, request.quiet, out, err);
+  if (!finished || !written.not_written.empty()) {
+    err << "interrupted: " << written.written.size() << " files written, " << written.not_written.size()
+        << " not written\n";
+    return kExitInterrupted;
+  }
+  return kExitOk;
+}
+
+}  // namespace dymesh::cli
