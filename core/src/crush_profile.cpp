@@ -51,19 +51,21 @@ CrushFace DamagedFace(const BodyState& state) {
   return best;
 }
 
-// C at one station: deepest vertex within half a spacing, else the nearest vertex along the width
+// C at one station: the deepest vertex within half a spacing; if none lies there, the deepest of
+// the vertices nearest to the station along the width
 double StationCrush(const std::vector<double>& s, const std::vector<double>& depth, double station, double half) {
-  double deepest = -1.0, nearest_depth = 0.0;
-  double nearest = std::numeric_limits<double>::infinity();
+  double within = -1.0, nearest = std::numeric_limits<double>::infinity();
   for (std::size_t v = 0; v < s.size(); ++v) {
     const double distance = std::abs(s[v] - station);
-    if (distance <= half) deepest = std::max(deepest, depth[v]);
-    if (distance < nearest) {
-      nearest = distance;
-      nearest_depth = depth[v];
-    }
+    if (distance <= half) within = std::max(within, depth[v]);
+    nearest = std::min(nearest, distance);
   }
-  return deepest >= 0.0 ? deepest : nearest_depth;
+  if (within >= 0.0) return within;
+  double deepest = 0.0;
+  const double tie = nearest + 1e-9 * (1.0 + nearest);
+  for (std::size_t v = 0; v < s.size(); ++v)
+    if (std::abs(s[v] - station) <= tie) deepest = std::max(deepest, depth[v]);
+  return deepest;
 }
 
 }  // namespace

@@ -190,15 +190,12 @@ std::string FormatFixed(double value, int decimals) {
 
 std::vector<double> NiceTicks(double lo, double hi, int target) {
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || target < 1) return {lo};
-  // step: 1, 2 or 5 times a power of ten, near span / target
+  // step: 1, 2, 5 or 10 times a power of ten, the nearest (by ratio) to span / target
   const double raw = (hi - lo) / target;
   const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = 10.0 * power;
-  for (double m : {1.0, 2.0, 5.0})
-    if (m * power >= raw) {
-      step = m * power;
-      break;
-    }
+  double step = power;
+  for (double m : {2.0, 5.0, 10.0})
+    if (std::abs(std::log(m * power / raw)) < std::abs(std::log(step / raw))) step = m * power;
   // every multiple of the step inside [lo, hi] (a hair of tolerance at the ends)
   std::vector<double> ticks;
   const double eps = 1e-9 * step;

@@ -16,7 +16,7 @@
 /// - stations: six, equally spaced over L, ends included; C1 at the left for the front and back
 ///   (-y, the driver's side of a left-hand-drive car), at the front for the sides (+x);
 /// - C_i: the largest crush depth among the vertices within half a station spacing of station i
-///   (any height); if none lies there, the depth of the vertex nearest to the station along L.
+///   (any height); if none lies there, the largest among the vertices nearest to the station along L.
 namespace dymesh {
 
 /// A face of the body (plan view).
