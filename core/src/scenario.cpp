@@ -682,6 +682,11 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   BodySpec body;
   body.name = ReadString(src, Require(src, j, path, "name"), Join(path, "name"));
   if (body.name.empty()) Fail(src, Join(path, "name"), "expected a non-empty string, got \"\"");
+  // the name becomes output file names (NAME_deformed.obj, ...)
+  const bool control = std::any_of(body.name.begin(), body.name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; });
+  if (control || body.name.find_first_of("/\\") != std::string::npos || body.name == "." || body.name == "..")
+    Fail(src, Join(path, "name"),
+         "expected a name usable in file names (no /, \\ or control characters), got " + Describe(j["name"]));
   // vehicle file first, then this body's own fields
   BodyFields fields;
   if (const Json* v = Find(j, "vehicle")) fields = LoadVehicle(src, *v, Join(path, "vehicle"));

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "dymesh/core/mesh_import.h"
+#include "dymesh/core/simulation.h"
 #include "dymesh/core/units.h"
 
 namespace dymesh {
@@ -267,6 +268,47 @@ TEST_F(ScenarioFiles, RefusesUnreadableMeshFile) {
     EXPECT_EQ(e.file(), Abs("meshes/garbage.obj"));
     EXPECT_EQ(e.field(), "bodies[0].mesh.file");
   }
+}
+
+TEST_F(ScenarioFiles, RefusesMeshFilesWithoutUsableTriangles) {
+  // parsing accepts an existing file; building the body models (as run and check do) refuses it
+  const std::pair<const char*, const char*> cases[] = {
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "cannot read mesh file"},              // points only
+      {"v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "non-finite vertex"},     // overflowing coordinate
+  };
+  for (const auto& [text, reason] : cases) {
+    WriteText(dir_ / "meshes" / "bad.obj", text);
+    Json j = Good();
+    j["bodies"][0]["mesh"]["file"] = "meshes/bad.obj";
+    const Scenario s = ParseScenario(j.dump(), ScenarioPath());
+    try {
+      BuildBodyModels(s);
+      ADD_FAILURE() << "no error for " << reason;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), Abs("meshes/bad.obj")) << e.what();
+      EXPECT_EQ(e.field(), "bodies[0].mesh.file") << e.what();
+      EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST_F(ScenarioFiles, RefusesMalformedVehicleFile) {
+  WriteText(dir_ / "vehicles" / "sedan.json", R"({"units": "SI", "mass": 1500,})");
+  const std::string message = ExpectRefused(Good().dump(), Abs("vehicles/sedan.json"), "(json)");
+  EXPECT_NE(message.find("malformed JSON"), std::string::npos) << message;
+}
+
+TEST_F(ScenarioFiles, RefusesBodyNamesUnusableAsFileNames) {
+  // body names become output file names
+  for (const char* name : {"../car", "a/b", "a\\b", "..", "tab\there"}) {
+    Json j = Good();
+    j["bodies"][0]["name"] = name;
+    const std::string message = ExpectRefused(j, "bodies[0].name");
+    EXPECT_NE(message.find("usable in file names"), std::string::npos) << message;
+  }
+  Json ok = Good();
+  ok["bodies"][0]["name"] = "Peugeot 406 (1999)";
+  EXPECT_NO_THROW(ParseScenario(ok.dump(), ScenarioPath()));
 }
 
 TEST_F(ScenarioFiles, RefusesNonFiniteNumber) {
