@@ -179,7 +179,7 @@ std::string SummarySection(const Context& c) {
   if (!c.summary.complete)
     s += "<p class=\"banner\" id=\"interrupted\">Interrupted at t = " + FormatFixed(c.summary.end_time, 4) +
          " s: everything below covers the run up to then only.</p>\n";
-  s += "<h2>Summary</h2>\n<table id=\"table-summary\">\n" + BodyTableHead(c) + "<tbody>\n";
+  s += "<h2 id=\"summary\">Summary</h2>\n<table id=\"table-summary\">\n" + BodyTableHead(c) + "<tbody>\n";
   s += "<tr><th colspan=\"" + std::to_string(c.sim.engine().body_count() + 1) + "\">inputs</th></tr>\n" + InputRows(c);
   s += "<tr><th colspan=\"" + std::to_string(c.sim.engine().body_count() + 1) + "\">results</th></tr>\n" + ResultRows(c);
   return s + "</tbody></table>\n" + OverallTable(c);

@@ -125,21 +125,22 @@ std::string ProfilePlot(const Context& c, int i) {
   return RenderLinePlot(plot);
 }
 
-// the six values with the width, centre and stations
+// the six values with their stations, then the width, centre and largest depth
 std::string ProfileTable(const Context& c, int i) {
   const CrushProfile& p = c.summary.bodies[i].crush_profile;
   const double l = c.units.length;
   const std::string unit = XmlEscape(c.units.length_name);
-  const bool across = p.face == CrushFace::kFront || p.face == CrushFace::kBack;
+  const std::string axis = p.face == CrushFace::kFront || p.face == CrushFace::kBack ? "y" : "x";
   std::string s = "<table id=\"table-crush-" + XmlEscape(IdPart(c.sim.engine().model(i).name)) + "\">\n<thead><tr><th>" +
-                  CrushFaceName(p.face) + " [" + unit + "]</th>";
-  for (int k = 1; k <= 6; ++k) s += "<th>C" + std::to_string(k) + "</th>";
-  s += "<th>width L</th><th>centre " + std::string(across ? "y" : "x") + "</th><th>max depth</th></tr></thead>\n<tbody><tr><td>crush</td>";
-  for (int k = 0; k < 6; ++k) s += "<td>" + FormatFixed(p.crush[k] * l, 2) + "</td>";
-  s += "<td>" + FormatFixed(p.width * l, 2) + "</td><td>" + FormatFixed(p.centre * l, 2) + "</td><td>" +
-       FormatFixed(p.max_depth * l, 2) + "</td></tr>\n<tr><td>station " + (across ? "y" : "x") + "</td>";
-  for (int k = 0; k < 6; ++k) s += "<td>" + FormatFixed(p.station[k] * l, 2) + "</td>";
-  return s + "<td></td><td></td><td></td></tr></tbody></table>\n";
+                  CrushFaceName(p.face) + "</th><th>station " + axis + " [" + unit + "]</th><th>crush [" + unit +
+                  "]</th></tr></thead>\n<tbody>\n";
+  for (int k = 0; k < 6; ++k)
+    s += "<tr><td>C" + std::to_string(k + 1) + "</td><td>" + FormatFixed(p.station[k] * l, 2) + "</td><td>" +
+         FormatFixed(p.crush[k] * l, 2) + "</td></tr>\n";
+  s += "<tr><td>damage width L</td><td></td><td>" + FormatFixed(p.width * l, 2) + "</td></tr>\n";
+  s += "<tr><td>centre of damage (" + axis + ")</td><td></td><td>" + FormatFixed(p.centre * l, 2) + "</td></tr>\n";
+  s += "<tr><td>largest depth</td><td></td><td>" + FormatFixed(p.max_depth * l, 2) + "</td></tr>\n";
+  return s + "</tbody></table>\n";
 }
 
 // one deformable body: views, colour scale, profile
@@ -154,15 +155,17 @@ std::string BodyCrush(const Context& c, int i) {
   s += "</div>\n" + RenderCrushColourBar("crush-scale-" + IdPart(name), c.crush_scale * c.units.length,
                                          std::string("permanent crush [") + c.units.length_name + "]", 600);
   if (profile.face == CrushFace::kNone) return s + "<p class=\"note\">No measurable permanent crush (less than 1 mm).</p>\n";
-  return s + Figure(ProfilePlot(c, i), "Six-point crush (CRASH3 style) across the damage width of the damaged face; "
-                                       "definition in the README.") +
-         ProfileTable(c, i);
+  // the profile plot with its table beside it
+  return s + "<div class=\"figures\">\n" +
+         Figure(ProfilePlot(c, i), "Six-point crush (CRASH3 style) across the damage width of the damaged face; "
+                                   "definition in the README.") +
+         "<div>\n" + ProfileTable(c, i) + "</div>\n</div>\n";
 }
 
 }  // namespace
 
 std::string CrushSection(const Context& c) {
-  std::string s = "<h2>Crush</h2>\n";
+  std::string s = "<h2 id=\"crush\">Crush</h2>\n";
   for (int i = 0; i < c.sim.engine().body_count(); ++i)
     if (!c.sim.engine().model(i).rigid) s += BodyCrush(c, i);
   return s;

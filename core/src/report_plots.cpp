@@ -186,7 +186,7 @@ std::vector<std::pair<double, double>> CgPath(const Context& c, int i) {
 }  // namespace
 
 std::string TimeHistorySection(const Context& c) {
-  std::string s = "<h2>Pulse</h2>\n<div class=\"figures\">\n";
+  std::string s = "<h2 id=\"pulse\">Pulse</h2>\n<div class=\"figures\">\n";
   for (int i = 0; i < c.sim.engine().body_count(); ++i)
     if (Moves(c.sim, i)) s += AccelerationPlot(c, i);
   s += DeltaVPlot(c) + ForcePlot(c) + MomentPlot(c) + EnergyPlot(c);
@@ -239,7 +239,7 @@ std::string TrajectorySection(const Context& c) {
     caption += instants[k].label + (instants[k].dash.empty() ? " solid, filled" : instants[k].dash == "2 3" ? " dotted" : " dashed") +
                (k + 2 < instants.size() ? "; " : k + 1 < instants.size() ? " and " : ".");
   caption += " The first two use the undamaged mesh (their overlap is the crush to come), the last the crushed one.";
-  return "<h2>Trajectories</h2>\n" + Figure(view.Render("plot-trajectories"), caption);
+  return "<h2 id=\"trajectories\">Trajectories</h2>\n" + Figure(view.Render("plot-trajectories"), caption);
 }
 
 }  // namespace dymesh::report

@@ -11,13 +11,14 @@ namespace dymesh {
 namespace {
 
 // layout of a line plot [px]
-constexpr int kLeft = 64, kRight = 18, kTop = 52, kBottom = 44;
+constexpr int kMinLeft = 56, kRight = 18, kTop = 52, kBottom = 44;
 constexpr const char* kFont = "font-family=\"sans-serif\"";
 
 // the data range of a plot: x and y limits with their ticks
 struct Axes {
   double x0, x1, y0, y1;
   std::vector<double> x_ticks, y_ticks;
+  int left = kMinLeft;  // [px] left margin: room for the longest y tick label and the axis label
 };
 
 // digits after the point that tell ticks `step` apart
@@ -53,6 +54,11 @@ Axes MakeAxes(const LinePlot& plot) {
   a.y1 = std::max(a.y1, std::ceil(a.y1 / step - 1e-9) * step);
   a.y_ticks = NiceTicks(a.y0, a.y1, 5);
   a.x_ticks = NiceTicks(a.x0, a.x1, 6);
+  // left margin from the longest y tick label (about 6.5 px per character at 11 px)
+  const int decimals = DecimalsFor(a.y_ticks.size() > 1 ? a.y_ticks[1] - a.y_ticks[0] : 1.0);
+  std::size_t longest = 0;
+  for (double t : a.y_ticks) longest = std::max(longest, FormatFixed(t, decimals).size());
+  a.left = std::max(kMinLeft, static_cast<int>(30 + 6.5 * longest));
   return a;
 }
 
@@ -61,7 +67,7 @@ struct Frame {
   const Axes& a;
   int width, height;
   bool invert_y;
-  double Px(double x) const { return kLeft + (x - a.x0) / (a.x1 - a.x0) * (width - kLeft - kRight); }
+  double Px(double x) const { return a.left + (x - a.x0) / (a.x1 - a.x0) * (width - a.left - kRight); }
   double Py(double y) const {
     const double f = (y - a.y0) / (a.y1 - a.y0);
     return invert_y ? kTop + f * (height - kTop - kBottom) : height - kBottom - f * (height - kTop - kBottom);
@@ -90,30 +96,30 @@ std::string AxesMarkup(const LinePlot& plot, const Axes& a, const Frame& f) {
          FormatFixed(t, x_decimals) + "</text>\n";
   }
   for (double t : a.y_ticks) {
-    s += "<line x1=\"" + Px(kLeft) + "\" y1=\"" + Px(f.Py(t)) + "\" x2=\"" + Px(plot.width - kRight) + "\" y2=\"" +
+    s += "<line x1=\"" + Px(a.left) + "\" y1=\"" + Px(f.Py(t)) + "\" x2=\"" + Px(plot.width - kRight) + "\" y2=\"" +
          Px(f.Py(t)) + "\" stroke=\"" + (t == 0.0 ? "#9a9a9a" : "#e4e4e4") + "\"/>";
-    s += "<text x=\"" + Px(kLeft - 6) + "\" y=\"" + Px(f.Py(t) + 4) + "\" text-anchor=\"end\">" +
+    s += "<text x=\"" + Px(a.left - 6) + "\" y=\"" + Px(f.Py(t) + 4) + "\" text-anchor=\"end\">" +
          FormatFixed(t, y_decimals) + "</text>\n";
   }
   // frame, axis labels, title
-  s += "<rect x=\"" + Px(kLeft) + "\" y=\"" + Px(kTop) + "\" width=\"" + Px(plot.width - kLeft - kRight) +
+  s += "<rect x=\"" + Px(a.left) + "\" y=\"" + Px(kTop) + "\" width=\"" + Px(plot.width - a.left - kRight) +
        "\" height=\"" + Px(plot.height - kTop - kBottom) + "\" fill=\"none\" stroke=\"#9a9a9a\"/>\n";
-  s += "<text x=\"" + Px(kLeft + 0.5 * (plot.width - kLeft - kRight)) + "\" y=\"" + Px(plot.height - 8) +
+  s += "<text x=\"" + Px(a.left + 0.5 * (plot.width - a.left - kRight)) + "\" y=\"" + Px(plot.height - 8) +
        "\" text-anchor=\"middle\">" + XmlEscape(plot.x_label) + "</text>\n";
   s += "<text transform=\"translate(14," + Px(kTop + 0.5 * (plot.height - kTop - kBottom)) +
        ") rotate(-90)\" text-anchor=\"middle\">" + XmlEscape(plot.y_label) + "</text>\n";
-  s += "<text x=\"" + Px(kLeft) + "\" y=\"18\" font-size=\"14\" font-weight=\"bold\" fill=\"#111111\">" +
+  s += "<text x=\"" + Px(a.left) + "\" y=\"18\" font-size=\"14\" font-weight=\"bold\" fill=\"#111111\">" +
        XmlEscape(plot.title) + "</text>\n</g>\n";
   return s;
 }
 
 // the legend: one row of swatches under the title, wrapping when it is full
-std::string LegendMarkup(const LinePlot& plot) {
+std::string LegendMarkup(const LinePlot& plot, int left) {
   std::string s = "<g class=\"legend\" " + std::string(kFont) + " font-size=\"11\" fill=\"#333333\">\n";
-  double x = kLeft, y = 36;
+  double x = left, y = 36;
   for (const PlotSeries& series : plot.series) {
     const double w = 30 + 6.2 * series.label.size();
-    if (x + w > plot.width - kRight && x > kLeft) x = kLeft, y += 14;
+    if (x + w > plot.width - kRight && x > left) x = left, y += 14;
     s += "<line x1=\"" + Px(x) + "\" y1=\"" + Px(y - 4) + "\" x2=\"" + Px(x + 20) + "\" y2=\"" + Px(y - 4) +
          "\" stroke=\"" + series.colour + "\" stroke-width=\"2.5\"" +
          (series.dashed ? " stroke-dasharray=\"5 3\"" : "") + "/>";
@@ -143,7 +149,7 @@ std::string SeriesMarkup(const PlotSeries& series, const Frame& f, const std::st
 // a marker dot with its label, kept inside the plot (label left of points in the right part)
 std::string MarkerMarkup(const PlotMarker& m, const Frame& f, const LinePlot& plot) {
   const double x = f.Px(m.x), y = f.Py(m.y);
-  const bool right_part = x > kLeft + 0.55 * (plot.width - kLeft - kRight);
+  const bool right_part = x > f.a.left + 0.55 * (plot.width - f.a.left - kRight);
   const double ty = std::clamp(m.below ? y + 18 : y - 8, static_cast<double>(kTop) + 12,
                               static_cast<double>(plot.height - kBottom) - 4);
   return "<circle cx=\"" + Px(x) + "\" cy=\"" + Px(y) + "\" r=\"4.5\" fill=\"" + m.colour +
@@ -154,7 +160,7 @@ std::string MarkerMarkup(const PlotMarker& m, const Frame& f, const LinePlot& pl
 
 // the shaded interval with its label at the top
 std::string BandMarkup(const PlotBand& band, const Frame& f, const LinePlot& plot) {
-  const double x0 = std::max<double>(f.Px(band.x0), kLeft);
+  const double x0 = std::max<double>(f.Px(band.x0), f.a.left);
   const double x1 = std::min<double>(f.Px(band.x1), plot.width - kRight);
   if (!(x1 > x0)) return {};
   return "<rect class=\"band\" x=\"" + Px(x0) + "\" y=\"" + Px(kTop) + "\" width=\"" + Px(x1 - x0) + "\" height=\"" +
@@ -241,14 +247,14 @@ std::string RenderLinePlot(const LinePlot& plot) {
   std::string s = SvgOpen(plot.id, plot.width, plot.height, plot.title);
   // background, clip region of the data area
   s += "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n<defs><clipPath id=\"" + XmlEscape(clip) +
-       "\"><rect x=\"" + Px(kLeft) + "\" y=\"" + Px(kTop) + "\" width=\"" + Px(plot.width - kLeft - kRight) +
+       "\"><rect x=\"" + Px(a.left) + "\" y=\"" + Px(kTop) + "\" width=\"" + Px(plot.width - a.left - kRight) +
        "\" height=\"" + Px(plot.height - kTop - kBottom) + "\"/></clipPath></defs>\n";
   // band under the grid, then axes, series, markers, legend
   if (plot.band) s += BandMarkup(*plot.band, f, plot);
   s += AxesMarkup(plot, a, f);
   for (const PlotSeries& series : plot.series) s += SeriesMarkup(series, f, XmlEscape(clip));
   for (const PlotMarker& m : plot.markers) s += MarkerMarkup(m, f, plot);
-  s += LegendMarkup(plot);
+  s += LegendMarkup(plot, a.left);
   return s + "</svg>\n";
 }
 
