@@ -1,0 +1,160 @@
+// The dymesh command as a user runs it: exit codes and messages on bad input, `check` on good
+// input, quiet and logged runs, and a run stopped by Ctrl-C (SIGINT).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "process.h"
+
+namespace dymesh {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using testing::ProcessResult;
+using testing::RunProcess;
+
+// a small two-box scenario (fast), US units
+Json BoxScenario() {
+  return Json::parse(R"({
+    "name": "two boxes", "units": "US",
+    "time": {"step": 0.0005, "duration": 0.05, "stop_at_separation": true},
+    "bodies": [
+      {"name": "car", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [1, 11, 5]}},
+       "weight": 3000, "restitution": 0.1, "stiffness": {"default": {"A": 300, "B": 100}},
+       "initial": {"position": [0, 0, 0], "speed": 30}},
+      {"name": "wall", "mesh": {"box": {"length": 40, "width": 400, "height": 100}}, "rigid": true,
+       "motion": "fixed", "initial": {"position": [110.5, 0, 0]}}
+    ]})");
+}
+
+// a folder per test, removed afterwards
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("dymesh_cli_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  ProcessResult Dymesh(const std::vector<std::string>& args, double seconds = 120.0) const {
+    std::vector<std::string> argv = {DYMESH_CLI};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return RunProcess(argv, dir_ / "process", seconds);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, OutOfRangeValueExitsTwoNamingFileAndField) {
+  Json j = BoxScenario();
+  j["bodies"][0]["restitution"] = 1.5;
+  const std::string path = Write("bad.json", j.dump());
+  const ProcessResult r = Dymesh({"run", path, "--out", (dir_ / "out").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "error: " + path + ": bodies[0].restitution: expected a number in [0, 1], got 1.5\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+  const ProcessResult c = Dymesh({"check", path});
+  EXPECT_EQ(c.exit_code, 2);
+  EXPECT_EQ(c.err, "error: " + path + ": bodies[0].restitution: expected a number in [0, 1], got 1.5\n");
+}
+
+TEST_F(Cli, MalformedJsonAndMissingMeshExitTwo) {
+  const std::string malformed = Write("malformed.json", "{\"units\": \"US\",, }");
+  ProcessResult r = Dymesh({"run", malformed, "--out", (dir_ / "out").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(malformed + ": (json): malformed JSON at byte"), std::string::npos) << r.err;
+  Json j = BoxScenario();
+  j["bodies"][0]["mesh"] = {{"file", "none.obj"}};
+  const std::string missing = Write("missing.json", j.dump());
+  r = Dymesh({"check", missing});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(missing + ": bodies[0].mesh.file: file not found: "), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, UnreadableMeshIsFoundByCheck) {
+  Write("garbage.obj", "this is not a mesh\nf 7 8 9\n");
+  Json j = BoxScenario();
+  j["bodies"][0]["mesh"] = {{"file", "garbage.obj"}};
+  const std::string path = Write("scenario.json", j.dump());
+  const ProcessResult r = Dymesh({"check", path});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find((dir_ / "garbage.obj").string() + ": bodies[0].mesh.file: cannot read mesh file"), std::string::npos)
+      << r.err;
+}
+
+TEST_F(Cli, CheckPrintsMeshStatisticsInScenarioUnits) {
+  const ProcessResult r = Dymesh({"check", std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* expected : {"body 0 \"p406\"", "vertices 4383, triangles 8557, open edges", "non-manifold edges",
+                               "bounds about the CG [in]: x ", "surfaces (vertices): front ", "weight 3000.0 lb",
+                               "body 1 \"barrier\": generated box", "size 40.00 x 400.00 x 100.00",
+                               "ok: scenario and 2 meshes are valid"})
+    EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, QuietRunPrintsNothingAndWritesEverything) {
+  const std::string path = Write("boxes.json", BoxScenario().dump());
+  const ProcessResult r = Dymesh({"run", path, "--quiet", "--out", (dir_ / "out").string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+  for (const char* name : {"summary.json", "report.html", "history.csv", "car_deformed.ply", "car_deformed.obj",
+                           "car_undeformed.ply", "wall_undeformed.obj"})
+    EXPECT_TRUE(fs::exists(dir_ / "out" / name)) << name;
+}
+
+TEST_F(Cli, LoggedRunPrintsSummaryWithoutTerminalCodes) {
+  const std::string path = Write("boxes.json", BoxScenario().dump());
+  const ProcessResult r = Dymesh({"run", path, "--out", (dir_ / "out").string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("  car              delta-V "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("report.html"), std::string::npos);
+  EXPECT_EQ(r.out.find('\r'), std::string::npos);
+  EXPECT_EQ(r.out.find('\033'), std::string::npos);
+}
+
+TEST_F(Cli, InterruptStopsAtTheNextStepAndWritesWhatIsDone) {
+  // a run of minutes: fine box, 10 us steps, kept in contact
+  Json j = BoxScenario();
+  j["time"] = {{"step", 0.00001}, {"duration", 2.0}, {"stop_at_separation", false}};
+  j["bodies"][0]["mesh"]["box"]["segments"] = {4, 44, 20};
+  const std::string path = Write("long.json", j.dump());
+  fs::create_directories(dir_ / "process");
+  const testing::Process p = testing::StartProcess({DYMESH_CLI, "run", path, "--out", (dir_ / "out").string()},
+                                                   dir_ / "process" / "stdout.txt", dir_ / "process" / "stderr.txt");
+  ASSERT_GT(p.pid, 0);
+  // the plain progress line comes after about 2 s of wall time; then Ctrl-C
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (testing::ReadFile(p.out).find("progress: ") == std::string::npos && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_NE(testing::ReadFile(p.out).find("progress: "), std::string::npos) << "no progress line within 60 s";
+  kill(p.pid, SIGINT);
+  const int code = testing::WaitProcess(p, 60.0);
+  const std::string out = testing::ReadFile(p.out), err = testing::ReadFile(p.err);
+  EXPECT_EQ(code, 130) << err;
+  EXPECT_NE(err.find("interrupted at t = "), std::string::npos) << err;
+  EXPECT_NE(err.find("interrupted: 11 files written, 0 not written"), std::string::npos) << err;
+  // the outputs describe the run up to the stop, and say so
+  const Json summary = Json::parse(testing::ReadFile(dir_ / "out" / "summary.json"));
+  EXPECT_EQ(summary["overall"]["status"], "interrupted");
+  EXPECT_LT(summary["overall"]["end_time_s"].get<double>(), 2.0);
+  EXPECT_NE(testing::ReadFile(dir_ / "out" / "report.html").find("id=\"interrupted\""), std::string::npos);
+  const std::string history = testing::ReadFile(dir_ / "out" / "history.csv");
+  EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), summary["overall"]["steps"].get<int>() + 2);
+  for (const auto& entry : fs::directory_iterator(dir_ / "out")) EXPECT_NE(entry.path().extension(), ".tmp");
+}
+
+}  // namespace
+}  // namespace dymesh
