@@ -44,8 +44,12 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, std::ost
   for (int k = 0; k < kBodySurfaceCount; ++k)
     surfaces += Format("%s%s %d", k ? ", " : "", BodySurfaceName(static_cast<BodySurface>(k)), count[k]);
   out << "    surfaces (vertices): " << surfaces << "\n";
-  out << Format("    %s %.1f %s, %s\n", scenario.units == UnitSystem::kUS ? "weight" : "mass", model.mass * u.mass,
-                u.mass_name, model.rigid ? "rigid" : "deformable");
+  const char* rigid = model.rigid ? "rigid" : "deformable";
+  if (scenario.bodies[i].motion == MotionModel::kFixed)
+    out << "    fixed (does not move), " << rigid << "\n";
+  else
+    out << Format("    %s %.1f %s, %s\n", scenario.units == UnitSystem::kUS ? "weight" : "mass", model.mass * u.mass,
+                  u.mass_name, rigid);
   // what the engine tolerates but a user should know
   if (s.nonmanifold_edges > 0)
     out << "    warning: non-manifold edges (more than two triangles on an edge): inside/outside may be ambiguous there\n";
