@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "commands.h"
+#include "format.h"
 #include "dymesh/core/mesh.h"
 #include "dymesh/core/results.h"
 #include "dymesh/core/scenario.h"
@@ -10,14 +11,6 @@
 
 namespace dymesh::cli {
 namespace {
-
-// printf into a string
-template <typename... Args>
-std::string Format(const char* format, Args... args) {
-  char text[512];
-  std::snprintf(text, sizeof text, format, args...);
-  return text;
-}
 
 // where a body's mesh comes from
 std::string SourceText(const BodySpec& body) {

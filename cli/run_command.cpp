@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "format.h"
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/core/results.h"
 #include "dymesh/core/scenario.h"
@@ -13,14 +14,6 @@
 
 namespace dymesh::cli {
 namespace {
-
-// printf into a string
-template <typename... Args>
-std::string Format(const char* format, Args... args) {
-  char text[512];
-  std::snprintf(text, sizeof text, format, args...);
-  return text;
-}
 
 // one line per body: the figures a reconstructionist looks at first
 void PrintSummary(const Summary& s, UnitSystem system, std::ostream& out) {
