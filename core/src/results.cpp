@@ -1,5 +1,6 @@
 #include "dymesh/core/results.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
