@@ -262,8 +262,9 @@ void ContactEngine::AddPairLoads(const std::vector<PassSums>& sums, std::vector<
   }
 }
 
-bool ContactEngine::ExamineTriangle(const PassFrame& f, int t, const Vec3& p, const Vec3& ray_dir, bool poly_normal,
-                                    const Located* best, Located* out) const {
+bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p,
+                                    const Vec3& ray_dir, bool poly_normal, const Located* best, Located* out) const {
+  const int t = candidate.triangle;
   const auto& tri = f.master_model->mesh.triangles[t];
   const Vec3& a = f.master->vertices[tri[0]];
   const Vec3& b = f.master->vertices[tri[1]];
@@ -275,8 +276,9 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, int t, const Vec3& p, co
   double depth = 0.0;
   if (!RayPlaneDistance(p, d, a, n, &depth)) return false;
   if (depth < -options_.search_backoff || depth > options_.toofar_maximum) return false;
+  // spec §2 inside test (InsidePolygonTest_CrossProd), unless the locator proved it with margin
   const Vec3 q = p + depth * d;
-  if (!InsideTriangleCrossProduct(q, a, b, c, n)) return false;
+  if (!(candidate.inside && !poly_normal) && !InsideTriangleCrossProduct(q, a, b, c, n)) return false;
   // best = smallest |depth|; ties keep the earlier (lower-index) triangle
   if (best == nullptr || std::abs(depth) < std::abs(best->depth)) {
     out->triangle = t;
@@ -287,7 +289,7 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, int t, const Vec3& p, co
   return true;
 }
 
-bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris, Located* out) const {
+bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>* tris, Located* out) const {
   const Vec3& p_slave = f.slave->vertices[v];
   const Vec3 p = f.ToMaster(p_slave);
   const Vec3 v_rel = f.RelativeVelocity(p_slave, p);
@@ -325,15 +327,20 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris
   } else {
     f.master_locator->TrianglesAlongSegment(v, origin, dir, backoff + reach, tris);
   }
-  std::sort(tris->begin(), tris->end());
-  tris->erase(std::unique(tris->begin(), tris->end()), tris->end());
+  // determinism: by triangle index, each triangle once (kept as proven inside if any copy was)
+  std::sort(tris->begin(), tris->end(), [](const Candidate& x, const Candidate& y) {
+    return x.triangle != y.triangle ? x.triangle < y.triangle : x.inside > y.inside;
+  });
+  tris->erase(std::unique(tris->begin(), tris->end(),
+                          [](const Candidate& x, const Candidate& y) { return x.triangle == y.triangle; }),
+              tris->end());
 
   // exact test of each candidate in triangle order, with the stop rule
   const int wanted = options_.stop_rule == StopRule::kAfterOne ? 1
                      : options_.stop_rule == StopRule::kBestOfTwo ? 2 : INT32_MAX;
   int accepted = 0;
-  for (int t : *tris) {
-    if (ExamineTriangle(f, t, p, dir, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
+  for (const Candidate& c : *tris) {
+    if (ExamineTriangle(f, c, p, dir, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
   }
   out->rel_velocity = v_rel;
   return accepted > 0;

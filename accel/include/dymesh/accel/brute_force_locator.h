@@ -10,8 +10,8 @@ class BruteForceLocator final : public Locator {
   explicit BruteForceLocator(const TriMesh& mesh);
   void Update(const std::vector<Vec3>& vertices) override;
   void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
-                             std::vector<int>* out) const override;
-  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const override;
+                             std::vector<Candidate>* out) const override;
+  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<Candidate>* out) const override;
 
  private:
   std::vector<std::array<int, 3>> triangles_;

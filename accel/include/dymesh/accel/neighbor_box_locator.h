@@ -23,8 +23,8 @@ class NeighborBoxLocator final : public Locator {
   void Prepare(int slave_body, int step, const std::vector<int>& keys,
                const std::function<Vec3(int)>& position) override;
   void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
-                             std::vector<int>* out) const override;
-  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const override;
+                             std::vector<Candidate>* out) const override;
+  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<Candidate>* out) const override;
 
   double box_half_size() const { return half_size_; }
   long long lists_built() const { return lists_built_; }

@@ -75,7 +75,7 @@ class ContactEngine {
     ContactDiagnostics diag;
     double crush_energy = 0.0;            // [J] node-law work on the slave's nodes
     std::vector<int> touching, moved;     // ascending node indices
-    std::vector<int> scratch;             // candidate triangles of one node
+    std::vector<Candidate> scratch;       // candidate triangles of one node
     void Clear() {
       sums = PassSums{};
       diag = ContactDiagnostics{};
@@ -90,9 +90,9 @@ class ContactEngine {
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const;
   void AddPairLoads(const std::vector<PassSums>& sums, std::vector<Vec3>* force_earth,
                     std::vector<Vec3>* moment_earth);
-  bool LocateNode(const PassFrame& f, int v, std::vector<int>* scratch, Located* out) const;
-  bool ExamineTriangle(const PassFrame& f, int t, const Vec3& p, const Vec3& ray_dir, bool poly_normal,
-                       const Located* best, Located* out) const;
+  bool LocateNode(const PassFrame& f, int v, std::vector<Candidate>* scratch, Located* out) const;
+  bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
+                       bool poly_normal, const Located* best, Located* out) const;
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
                      ContactDiagnostics* diag, double* crush_energy, Vec3* pushback_dir_slave) const;
   bool BoundsOverlap(int a, int b) const;
