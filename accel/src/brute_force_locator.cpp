@@ -8,7 +8,9 @@ namespace dymesh {
 
 BruteForceLocator::BruteForceLocator(const TriMesh& mesh) : triangles_(mesh.triangles), vertices_(mesh.vertices) {}
 
-void BruteForceLocator::Update(const std::vector<Vec3>& vertices) { vertices_ = vertices; }
+void BruteForceLocator::Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) {
+  for (int v : moved) vertices_[v] = vertices[v];
+}
 
 void BruteForceLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const Vec3& dir, double length,
                                               std::vector<Candidate>* out) const {

@@ -34,11 +34,11 @@ NeighborBoxLocator::NeighborBoxLocator(const TriMesh& mesh, const ContactOptions
   slack_ = half_size_ - search;
 }
 
-void NeighborBoxLocator::Update(const std::vector<Vec3>& vertices) {
+void NeighborBoxLocator::Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) {
   // track how far the master moved since the grid was built (lists stay valid within the slack)
-  vertices_ = vertices;
-  for (size_t v = 0; v < vertices_.size() && !grid_vertices_.empty(); ++v) {
-    master_drift_ = std::max(master_drift_, MaxAbs(vertices_[v] - grid_vertices_[v]));
+  for (int v : moved) {
+    vertices_[v] = vertices[v];
+    if (!grid_vertices_.empty()) master_drift_ = std::max(master_drift_, MaxAbs(vertices_[v] - grid_vertices_[v]));
   }
 }
 

@@ -240,7 +240,7 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
   if (!moved.empty()) {
     UpdateTriangles(*f.slave_model, moved, f.slave);
     RefreshBounds(slave);
-    locators_[slave]->Update(f.slave->vertices);
+    locators_[slave]->Update(f.slave->vertices, moved);
   }
   return sums;
 }

@@ -8,7 +8,7 @@ namespace dymesh {
 class BruteForceLocator final : public Locator {
  public:
   explicit BruteForceLocator(const TriMesh& mesh);
-  void Update(const std::vector<Vec3>& vertices) override;
+  void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override;
   void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
                              std::vector<Candidate>* out) const override;
   void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<Candidate>* out) const override;

@@ -19,7 +19,7 @@ class NeighborBoxLocator final : public Locator {
   /// `options.global_search_box` is the box half-size (0: SetBoxSize, from the mesh extents).
   NeighborBoxLocator(const TriMesh& mesh, const ContactOptions& options);
 
-  void Update(const std::vector<Vec3>& vertices) override;
+  void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override;
   void Prepare(int slave_body, int step, const std::vector<int>& keys,
                const std::function<Vec3(int)>& position) override;
   void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,

@@ -22,8 +22,9 @@ class Locator {
  public:
   virtual ~Locator() = default;
 
-  /// Takes the master's current body-frame vertices after crush (refit); orchestrating thread only.
-  virtual void Update(const std::vector<Vec3>& vertices) = 0;
+  /// Takes the body's current body-frame vertices after crush (refit); `moved` lists the vertices
+  /// that changed since the last update, ascending. Orchestrating thread only.
+  virtual void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) = 0;
 
   /// Announces the nodes of body `slave_body` (vertex indices `keys`, ascending) that the coming pass
   /// will locate in this body at step `step`; `position(key)` is a node's position in this body's
