@@ -11,9 +11,9 @@
 namespace dymesh {
 namespace {
 
-// a hit this far (barycentric) from every edge of its triangle is inside it for sure: the float
-// triangle is inflated by far less than this fraction of any reasonable triangle
-constexpr float kSurelyInside = 0.05f;
+// a hit this many inflations away from every edge of its triangle is inside the double triangle
+// for sure (float rounding and the inflation together stay below two inflations)
+constexpr double kInsideMargin = 8.0;
 
 // triangles per Embree geometry: a crush refits only the groups it touches
 constexpr size_t kGroupSize = 4096;
@@ -33,10 +33,8 @@ void CollectAllHits(const RTCFilterFunctionNArguments* args) {
   auto* ctx = reinterpret_cast<const CollectContext*>(args->context);
   if (args->valid[0] == 0) return;
   const float u = RTCHitN_u(args->hit, args->N, 0), v = RTCHitN_v(args->hit, args->N, 0);
-  const bool inside = std::min({u, v, 1.0f - u - v}) >= kSurelyInside;
-  ctx->out->push_back({ctx->locator->Triangle(RTCHitN_geomID(args->hit, args->N, 0),
-                                              RTCHitN_primID(args->hit, args->N, 0)),
-                       inside});
+  const int triangle = ctx->locator->Triangle(RTCHitN_geomID(args->hit, args->N, 0), RTCHitN_primID(args->hit, args->N, 0));
+  ctx->out->push_back({triangle, std::min({u, v, 1.0f - u - v}) >= ctx->locator->EdgeMargin(triangle)});
   args->valid[0] = 0;
 }
 
@@ -98,6 +96,9 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   vertex_buffer_.assign(3 * nv + 4, 0.0f);
   stamp_.assign(nv, 0);
   for (size_t v = 0; v < nv; ++v) InflateVertex(mesh.vertices, static_cast<int>(v));
+  // barycentric margin of each triangle: kInsideMargin inflations over its smallest altitude
+  edge_margin_.resize(nt);
+  for (size_t t = 0; t < nt; ++t) UpdateEdgeMargin(mesh.vertices, static_cast<int>(t));
   // groups: triangles in Morton order of their centres, cut into runs of kGroupSize
   std::vector<std::pair<std::uint32_t, int>> order(nt);
   const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-9));
@@ -158,6 +159,16 @@ void EmbreeLocator::InflateVertex(const std::vector<Vec3>& vertices, int v) {
   for (int k = 0; k < 3; ++k) vertex_buffer_[3 * v + k] = static_cast<float>(p[k]);
 }
 
+void EmbreeLocator::UpdateEdgeMargin(const std::vector<Vec3>& vertices, int t) {
+  // altitude = 2 area / edge length, smallest over the three edges
+  const auto& tri = triangles_[t];
+  const double twice_area = TriangleCross(vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]).norm();
+  double longest = 0.0;
+  for (int k = 0; k < 3; ++k) longest = std::max(longest, (vertices[tri[(k + 1) % 3]] - vertices[tri[k]]).norm());
+  const double altitude = longest > 0.0 ? twice_area / longest : 0.0;
+  edge_margin_[t] = altitude > 0.0 ? static_cast<float>(std::min(kInsideMargin * inflation_ / altitude, 1.0)) : 1.0f;
+}
+
 void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) {
   // vertices whose position or normal changed: the moved ones and their neighbours
   ++update_count_;
@@ -176,6 +187,9 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
   for (int v : affected) {
     InflateVertex(vertices, v);
     for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) dirty[triangle_group_[ring_.ids[k]]] = 1;
+  }
+  for (int v : moved) {
+    for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) UpdateEdgeMargin(vertices, ring_.ids[k]);
   }
   // refit only the groups that hold a changed vertex, then the top level
   for (size_t g = 0; g < geometries_.size(); ++g) {

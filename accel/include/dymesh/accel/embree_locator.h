@@ -46,8 +46,12 @@ class EmbreeLocator final : public Locator {
   /// Mesh triangle of Embree's (geometry, primitive) pair.
   int Triangle(unsigned geom_id, unsigned prim_id) const { return group_triangles_[group_first_[geom_id] + prim_id]; }
 
+  /// Smallest barycentric distance from the edges at which a hit on triangle t is surely inside it.
+  float EdgeMargin(int t) const { return edge_margin_[t]; }
+
  private:
   void InflateVertex(const std::vector<Vec3>& vertices, int v);
+  void UpdateEdgeMargin(const std::vector<Vec3>& vertices, int t);
 
   std::shared_ptr<const EmbreeDevice> device_;
   void* scene_ = nullptr;
@@ -59,6 +63,7 @@ class EmbreeLocator final : public Locator {
   std::vector<int> group_first_;       // first slot of each group in group_triangles_ (n_groups + 1)
   std::vector<int> group_triangles_;   // mesh triangles, group by group (n_triangles)
   std::vector<int> triangle_group_;    // group of each mesh triangle (n_triangles)
+  std::vector<float> edge_margin_;     // barycentric margin of a sure inside hit (n_triangles)
   std::vector<int> stamp_;             // scratch marks for Update (n_vertices)
   int update_count_ = 0;
 };
