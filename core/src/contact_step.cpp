@@ -63,18 +63,35 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   }
   bounds_min_.resize(n);
   bounds_max_.resize(n);
-  for (int i = 0; i < n; ++i) RefreshBounds(i);
+  chunk_min_.resize(n);
+  chunk_max_.resize(n);
+  for (int i = 0; i < n; ++i) InitBounds(i);
   touching_.resize(static_cast<size_t>(n) * n);
 }
 
-void ContactEngine::RefreshBounds(int body) {
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (const Vec3& p : states_[body].vertices) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
+void ContactEngine::InitBounds(int body) {
+  // one box per fixed chunk of vertices (mesh order is spatially coherent) and one for the body
+  const std::vector<Vec3>& vertices = states_[body].vertices;
+  const std::size_t chunks = ChunkCount(vertices.size());
+  chunk_min_[body].assign(chunks, Vec3::Constant(INFINITY));
+  chunk_max_[body].assign(chunks, Vec3::Constant(-INFINITY));
+  std::vector<int> all(vertices.size());
+  for (std::size_t v = 0; v < all.size(); ++v) all[v] = static_cast<int>(v);
+  bounds_min_[body] = Vec3::Constant(INFINITY);
+  bounds_max_[body] = Vec3::Constant(-INFINITY);
+  GrowBounds(body, all);
+}
+
+void ContactEngine::GrowBounds(int body, const std::vector<int>& moved) {
+  // boxes only grow: after crush they still hold every vertex (a conservative cull)
+  const std::vector<Vec3>& vertices = states_[body].vertices;
+  for (int v : moved) {
+    const std::size_t c = static_cast<std::size_t>(v) / kChunkSize;
+    chunk_min_[body][c] = chunk_min_[body][c].cwiseMin(vertices[v]);
+    chunk_max_[body][c] = chunk_max_[body][c].cwiseMax(vertices[v]);
+    bounds_min_[body] = bounds_min_[body].cwiseMin(vertices[v]);
+    bounds_max_[body] = bounds_max_[body].cwiseMax(vertices[v]);
   }
-  bounds_min_[body] = lo;
-  bounds_max_[body] = hi;
 }
 
 bool ContactEngine::BoundsOverlap(int a, int b) const {
@@ -136,13 +153,21 @@ StepResult ContactEngine::Step(double dt) {
   return result;
 }
 
-std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, const std::vector<int>& touching) {
+std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, int slave_index,
+                                               const std::vector<int>& touching) {
   // slave nodes inside the master's bounds grown by the search reach, in chunks, in index order
   const double reach = options_.search_backoff + options_.toofar_maximum;
   const Vec3 lo = bounds_min_[master].array() - reach, hi = bounds_max_[master].array() + reach;
   const std::size_t nv = f.slave->vertices.size();
+  const Mat3 abs_rotation = f.r_slave_to_master.cwiseAbs();
+  const std::vector<Vec3>& box_min = chunk_min_[slave_index];
+  const std::vector<Vec3>& box_max = chunk_max_[slave_index];
   std::vector<std::vector<int>> inside(ChunkCount(nv));
   ForEachChunk(nv, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    // a chunk whose box misses the master's is skipped whole
+    const Vec3 centre = f.ToMaster(0.5 * (box_min[chunk] + box_max[chunk]));
+    const Vec3 half = abs_rotation * (0.5 * (box_max[chunk] - box_min[chunk]));
+    if (((centre + half).array() < lo.array()).any() || ((centre - half).array() > hi.array()).any()) return;
     for (std::size_t v = begin; v < end; ++v) {
       const Vec3 p = f.ToMaster(f.slave->vertices[v]);
       if ((p.array() >= lo.array()).all() && (p.array() <= hi.array()).all()) {
@@ -200,7 +225,7 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
 
-  const std::vector<int> candidates = CullCandidates(f, master, *touching);
+  const std::vector<int> candidates = CullCandidates(f, master, slave, *touching);
   diag->candidates += static_cast<long long>(candidates.size());
   locators_[master]->Prepare(slave, step_index_, candidates,
                              [&](int v) { return f.ToMaster(f.slave->vertices[v]); });
@@ -239,7 +264,7 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
   // crushed nodes change the slave's triangles, bounds and search structure (refit)
   if (!moved.empty()) {
     UpdateTriangles(*f.slave_model, moved, f.slave);
-    RefreshBounds(slave);
+    GrowBounds(slave, moved);
     locators_[slave]->Update(f.slave->vertices, moved);
   }
   return sums;

@@ -86,7 +86,7 @@ class ContactEngine {
   };
   PassSums RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt,
                    ContactDiagnostics* diag);
-  std::vector<int> CullCandidates(const PassFrame& f, int master, const std::vector<int>& touching);
+  std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const std::vector<int>& touching);
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const;
   void AddPairLoads(const std::vector<PassSums>& sums, std::vector<Vec3>* force_earth,
                     std::vector<Vec3>* moment_earth);
@@ -96,12 +96,14 @@ class ContactEngine {
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
                      ContactDiagnostics* diag, double* crush_energy, Vec3* pushback_dir_slave) const;
   bool BoundsOverlap(int a, int b) const;
-  void RefreshBounds(int body);
+  void InitBounds(int body);
+  void GrowBounds(int body, const std::vector<int>& moved);
 
   std::vector<std::shared_ptr<const BodyModel>> models_;
   std::vector<BodyState> states_;
   std::vector<std::unique_ptr<Locator>> locators_;
-  std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame bounds of the current vertices, per body
+  std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame box holding every vertex so far, per body
+  std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
   std::vector<std::array<std::vector<int>, 2>> touching_;
   std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop  // per pair (a<b): nodes of a, of b touching the other
   ContactOptions options_;
