@@ -41,9 +41,10 @@ TriMesh LoadDataMesh(const std::string& file, int subdivisions) {
   return Centred(BuildBodyMesh(source, "(bench)", "mesh"));
 }
 
-TriMesh LoadUserMesh(const std::string& path) {
+TriMesh LoadUserMesh(const std::string& path, const std::array<std::string, 3>& axes) {
   MeshSource source;
   source.file = path;
+  source.axes = axes;
   return Centred(BuildBodyMesh(source, "(bench)", "mesh"));
 }
 

@@ -13,8 +13,9 @@ namespace dymesh::bench {
 /// `subdivisions` 1-to-4 midpoint subdivisions (four times the triangles each).
 TriMesh LoadDataMesh(const std::string& file, int subdivisions);
 
-/// Any mesh file the user brings (assimp), in its own axes about its bounds centre.
-TriMesh LoadUserMesh(const std::string& path);
+/// Any mesh file the user brings (assimp), mapped to body axes by `axes` (as a scenario's
+/// mesh.axes, e.g. {"x", "z", "-y"} for a y-up mesh), about its bounds centre.
+TriMesh LoadUserMesh(const std::string& path, const std::array<std::string, 3>& axes);
 
 /// Master at the origin; the slave turned 90 degrees, its +x end driven into the master's -y side
 /// by `penetration` [m], moving toward it at `speed` [m/s]. Deformable bodies with a plausible

@@ -5,6 +5,7 @@
 #include <exception>
 #include <iostream>
 
+#include "bench_command.h"
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/core/results.h"
 #include "dymesh/core/scenario.h"
@@ -51,8 +52,22 @@ int main(int argc, char** argv) {
   CLI::App* run = app.add_subcommand("run", "simulate a scenario and write summary.json, history.csv and meshes");
   run->add_option("scenario", scenario_path, "scenario JSON file")->required();
   run->add_option("--out", out_dir, "output folder (created if missing)");
+  dymesh::cli::BenchRequest bench;
+  CLI::App* bench_cmd = app.add_subcommand("bench", "locate rates, step time and memory for two meshes in contact");
+  bench_cmd->add_option("--master", bench.master, "master mesh file (metres)")->required();
+  bench_cmd->add_option("--slave", bench.slave, "slave mesh file (metres)")->required();
+  bench_cmd->add_option("--threads", bench.threads, "worker threads for the step timing")->check(CLI::PositiveNumber);
+  bench_cmd->add_flag("--json", bench.json, "print JSON");
+  std::vector<std::string> axes;
+  bench_cmd->add_option("--axes", axes, "body x,y,z from signed mesh axes, e.g. --axes=x,z,-y for y-up meshes")
+      ->delimiter(',')
+      ->expected(3);
   CLI11_PARSE(app, argc, argv);
   try {
+    if (bench_cmd->parsed()) {
+      if (axes.size() == 3) bench.axes = {axes[0], axes[1], axes[2]};
+      return dymesh::cli::RunBench(bench);
+    }
     return Run(scenario_path, out_dir);
   } catch (const dymesh::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
