@@ -67,6 +67,7 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   chunk_max_.resize(n);
   for (int i = 0; i < n; ++i) InitBounds(i);
   touching_.resize(static_cast<size_t>(n) * n);
+  touching_mark_.resize(n);
 }
 
 void ContactEngine::InitBounds(int body) {
@@ -232,15 +233,16 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
 
   // one parallel loop over fixed chunks of candidates; each chunk writes its own nodes and partials
   chunks_.resize(std::max(chunks_.size(), ChunkCount(candidates.size())));
-  const std::vector<int>& was = *touching;
+  // nodes touching at their last update, marked for constant-time look-up
+  std::vector<char>& was_touching = touching_mark_[slave];
+  was_touching.resize(f.slave->vertices.size(), 0);
+  for (int v : *touching) was_touching[v] = 1;
   ForEachChunk(candidates.size(), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     ChunkSums& out = chunks_[chunk];
     out.Clear();
-    for (std::size_t i = begin; i < end; ++i) {
-      const int v = candidates[i];
-      ProcessNode(f, v, std::binary_search(was.begin(), was.end(), v), dt, &out);
-    }
+    for (std::size_t i = begin; i < end; ++i) ProcessNode(f, candidates[i], was_touching[candidates[i]] != 0, dt, &out);
   });
+  for (int v : *touching) was_touching[v] = 0;
 
   // determinism: partial sums and node lists folded serially in chunk order
   PassSums sums;
@@ -353,12 +355,14 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>
     f.master_locator->TrianglesAlongSegment(v, origin, dir, backoff + reach, tris);
   }
   // determinism: by triangle index, each triangle once (kept as proven inside if any copy was)
-  std::sort(tris->begin(), tris->end(), [](const Candidate& x, const Candidate& y) {
-    return x.triangle != y.triangle ? x.triangle < y.triangle : x.inside > y.inside;
-  });
-  tris->erase(std::unique(tris->begin(), tris->end(),
-                          [](const Candidate& x, const Candidate& y) { return x.triangle == y.triangle; }),
-              tris->end());
+  if (tris->size() > 1) {
+    std::sort(tris->begin(), tris->end(), [](const Candidate& x, const Candidate& y) {
+      return x.triangle != y.triangle ? x.triangle < y.triangle : x.inside > y.inside;
+    });
+    tris->erase(std::unique(tris->begin(), tris->end(),
+                            [](const Candidate& x, const Candidate& y) { return x.triangle == y.triangle; }),
+                tris->end());
+  }
 
   // exact test of each candidate in triangle order, with the stop rule
   const int wanted = options_.stop_rule == StopRule::kAfterOne ? 1

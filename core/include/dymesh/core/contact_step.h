@@ -105,7 +105,8 @@ class ContactEngine {
   std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame box holding every vertex so far, per body
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
   std::vector<std::array<std::vector<int>, 2>> touching_;
-  std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop  // per pair (a<b): nodes of a, of b touching the other
+  std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop
+  std::vector<std::vector<char>> touching_mark_;  // per body: 1 for nodes touching the current master  // per pair (a<b): nodes of a, of b touching the other
   ContactOptions options_;
   int step_index_ = 0;
 };
