@@ -8,6 +8,7 @@
 #include <exception>
 #include <iostream>
 
+#include "bench_command.h"
 #include "commands.h"
 #include "dymesh/core/scenario.h"
 
@@ -64,9 +65,24 @@ int main(int argc, char** argv) {
   std::string check_path;
   CLI::App* check = app.add_subcommand("check", "validate a scenario and its meshes without running; print mesh statistics");
   check->add_option("scenario", check_path, "scenario JSON file")->required();
+  // bench: the benchmark figures for two meshes the user brings
+  dymesh::cli::BenchRequest bench;
+  std::vector<std::string> axes;
+  CLI::App* bench_cmd = app.add_subcommand("bench", "locate rates, step time and memory for two meshes in contact");
+  bench_cmd->add_option("--master", bench.master, "master mesh file (metres)")->required();
+  bench_cmd->add_option("--slave", bench.slave, "slave mesh file (metres)")->required();
+  bench_cmd->add_option("--threads", bench.threads, "worker threads for the step timing")->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--axes", axes, "body x,y,z from signed mesh axes, e.g. --axes=x,z,-y for y-up meshes")
+      ->delimiter(',')
+      ->expected(3);
+  bench_cmd->add_flag("--json", bench.json, "print JSON");
   CLI11_PARSE(app, argc, argv);
 
   if (*check) return Guarded([&] { return dymesh::cli::CheckCommand(check_path, std::cout); });
+  if (*bench_cmd) {
+    if (axes.size() == 3) bench.axes = {axes[0], axes[1], axes[2]};
+    return Guarded([&] { return dymesh::cli::RunBench(bench); });
+  }
   request.terminal = isatty(STDOUT_FILENO) != 0;
   InstallStopHandlers();
   return Guarded([&] {

@@ -8,22 +8,24 @@ namespace dymesh {
 
 BruteForceLocator::BruteForceLocator(const TriMesh& mesh) : triangles_(mesh.triangles), vertices_(mesh.vertices) {}
 
-void BruteForceLocator::Update(const std::vector<Vec3>& vertices) { vertices_ = vertices; }
+void BruteForceLocator::Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) {
+  for (int v : moved) vertices_[v] = vertices[v];
+}
 
 void BruteForceLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const Vec3& dir, double length,
-                                              std::vector<int>* out) const {
+                                              std::vector<Candidate>* out) const {
   // every triangle whose plane the segment crosses inside the triangle, in double precision
   const double slack = 1e-9 * (1.0 + length);
   for (size_t t = 0; t < triangles_.size(); ++t) {
     double dist = 0.0;
     if (SegmentCrossesTriangle(origin, dir, length, vertices_[triangles_[t][0]], vertices_[triangles_[t][1]],
                                vertices_[triangles_[t][2]], slack, &dist)) {
-      out->push_back(static_cast<int>(t));
+      out->push_back({static_cast<int>(t), true});
     }
   }
 }
 
-void BruteForceLocator::TrianglesNearPoint(int /*key*/, const Vec3& p, double radius, std::vector<int>* out) const {
+void BruteForceLocator::TrianglesNearPoint(int /*key*/, const Vec3& p, double radius, std::vector<Candidate>* out) const {
   // every triangle whose bounding box comes within the radius
   for (size_t t = 0; t < triangles_.size(); ++t) {
     const Vec3& a = vertices_[triangles_[t][0]];
@@ -31,7 +33,7 @@ void BruteForceLocator::TrianglesNearPoint(int /*key*/, const Vec3& p, double ra
     const Vec3& c = vertices_[triangles_[t][2]];
     const Vec3 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
     const Vec3 nearest = p.cwiseMax(lo).cwiseMin(hi);
-    if ((nearest - p).norm() <= radius) out->push_back(static_cast<int>(t));
+    if ((nearest - p).norm() <= radius) out->push_back({static_cast<int>(t), false});
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -9,29 +11,45 @@
 namespace dymesh {
 namespace {
 
+// a hit this many inflations away from every edge of its triangle is inside the double triangle
+// for sure (float rounding and the inflation together stay below two inflations)
+constexpr double kInsideMargin = 8.0;
+
+// triangles per Embree geometry: a crush refits only the groups it touches
+constexpr size_t kGroupSize = 4096;
+
 RTCDevice Dev(const EmbreeDevice& d) { return static_cast<RTCDevice>(d.handle()); }
 
 // ray context that collects every hit of the segment instead of keeping the closest
 struct CollectContext {
   RTCIntersectContext base;
-  std::vector<int>* out;
+  std::vector<Candidate>* out;
+  const EmbreeLocator* locator;
 };
 
 void CollectAllHits(const RTCFilterFunctionNArguments* args) {
-  // record the triangle, then reject the hit so traversal goes on along the whole segment
+  // record the triangle (and whether the hit is clear of its edges), then reject the hit so that
+  // traversal goes on along the whole segment
   auto* ctx = reinterpret_cast<const CollectContext*>(args->context);
   if (args->valid[0] == 0) return;
-  ctx->out->push_back(static_cast<int>(RTCHitN_primID(args->hit, args->N, 0)));
+  const float u = RTCHitN_u(args->hit, args->N, 0), v = RTCHitN_v(args->hit, args->N, 0);
+  const int triangle = ctx->locator->Triangle(RTCHitN_geomID(args->hit, args->N, 0), RTCHitN_primID(args->hit, args->N, 0));
+  ctx->out->push_back({triangle, std::min({u, v, 1.0f - u - v}) >= ctx->locator->EdgeMargin(triangle)});
   args->valid[0] = 0;
 }
 
+// user data of a point query
+struct NearContext {
+  std::vector<Candidate>* out;
+  const EmbreeLocator* locator;
+};
+
 bool CollectNearPrimitive(RTCPointQueryFunctionArguments* args) {
   // every triangle in a leaf the query sphere reaches; the contact step tests it exactly
-  static_cast<std::vector<int>*>(args->userPtr)->push_back(static_cast<int>(args->primID));
+  auto* ctx = static_cast<NearContext*>(args->userPtr);
+  ctx->out->push_back({ctx->locator->Triangle(args->geomID, args->primID), false});
   return false;
 }
-
-constexpr double kEdgeOffset = 1e-5;  // [m] offset of the retry rays, ~30 float ulps at 5 m
 
 std::string DefaultConfig() {
   // determinism: a pinned ISA, so BVH layout and hits do not depend on the machine's vector width
@@ -48,108 +66,187 @@ EmbreeDevice::EmbreeDevice(const std::string& config) {
 
 EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(static_cast<RTCDevice>(device_)); }
 
+namespace {
+
+// Morton code of a point in the unit cube (10 bits per axis)
+std::uint32_t Morton(const Vec3& unit) {
+  auto spread = [](std::uint32_t x) {
+    x = (x | (x << 16)) & 0x030000FF;
+    x = (x | (x << 8)) & 0x0300F00F;
+    x = (x | (x << 4)) & 0x030C30C3;
+    return (x | (x << 2)) & 0x09249249;
+  };
+  auto cell = [](double c) { return static_cast<std::uint32_t>(std::clamp(c, 0.0, 1.0) * 1023.0); };
+  return spread(cell(unit.x())) | (spread(cell(unit.y())) << 1) | (spread(cell(unit.z())) << 2);
+}
+
+}  // namespace
+
 EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const TriMesh& mesh)
-    : device_(std::move(device)), vertex_count_(mesh.vertices.size()), triangles_(mesh.triangles),
-      ring_(BuildVertexTriangles(mesh)) {
-  // a deformable scene: DYNAMIC + LOW quality so Update refits, ROBUST so shared edges do not leak
+    : device_(std::move(device)), triangles_(mesh.triangles), ring_(BuildVertexTriangles(mesh)) {
+  const size_t nv = mesh.vertices.size(), nt = triangles_.size();
+  // inflation: four float ulps at the mesh's largest coordinate
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (const Vec3& p : mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  inflation_ = 4.0 * std::max({lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff(), 1.0}) * std::ldexp(1.0, -23);
+  // shared float vertices, inflated; padded so the last vertex can be read with a 16-byte load
+  vertex_buffer_.assign(3 * nv + 4, 0.0f);
+  stamp_.assign(nv, 0);
+  for (size_t v = 0; v < nv; ++v) InflateVertex(mesh.vertices, static_cast<int>(v));
+  // barycentric margin of each triangle: kInsideMargin inflations over its smallest altitude
+  edge_margin_.resize(nt);
+  for (size_t t = 0; t < nt; ++t) UpdateEdgeMargin(mesh.vertices, static_cast<int>(t));
+  // groups: triangles in Morton order of their centres, cut into runs of kGroupSize
+  std::vector<std::pair<std::uint32_t, int>> order(nt);
+  const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-9));
+  for (size_t t = 0; t < nt; ++t) {
+    const Vec3 centre = (mesh.vertices[triangles_[t][0]] + mesh.vertices[triangles_[t][1]] +
+                         mesh.vertices[triangles_[t][2]]) / 3.0;
+    order[t] = {Morton((centre - lo).cwiseQuotient(extent)), static_cast<int>(t)};
+  }
+  std::sort(order.begin(), order.end());
+  group_triangles_.resize(nt);
+  triangle_group_.resize(nt);
+  for (size_t i = 0; i < nt; ++i) {
+    group_triangles_[i] = order[i].second;
+    triangle_group_[order[i].second] = static_cast<int>(i / kGroupSize);
+  }
+  for (size_t first = 0; first < nt; first += kGroupSize) group_first_.push_back(static_cast<int>(first));
+  group_first_.push_back(static_cast<int>(nt));
+  // a deformable scene: DYNAMIC (two-level: only modified groups are refit), LOW quality, ROBUST
   RTCScene scene = rtcNewScene(Dev(*device_));
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
-  RTCGeometry geom = rtcNewGeometry(Dev(*device_), RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
-  // Embree-allocated buffers carry the padding its 16-byte vertex loads need
-  vertex_buffer_ = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                               3 * sizeof(float), vertex_count_));
-  auto* index = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                               3 * sizeof(unsigned), triangles_.size()));
-  for (size_t t = 0; t < triangles_.size(); ++t) {
-    for (int k = 0; k < 3; ++k) index[3 * t + k] = static_cast<unsigned>(triangles_[t][k]);
+  for (size_t g = 0; g + 1 < group_first_.size(); ++g) {
+    RTCGeometry geom = rtcNewGeometry(Dev(*device_), RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertex_buffer_.data(), 0,
+                               3 * sizeof(float), nv);
+    const int count = group_first_[g + 1] - group_first_[g];
+    auto* index = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
+    for (int i = 0; i < count; ++i) {
+      const auto& tri = triangles_[group_triangles_[group_first_[g] + i]];
+      for (int k = 0; k < 3; ++k) index[3 * i + k] = static_cast<unsigned>(tri[k]);
+    }
+    rtcCommitGeometry(geom);
+    // determinism: geometry ids are the group indices
+    rtcAttachGeometryByID(scene, geom, static_cast<unsigned>(g));
+    geometries_.push_back(geom);
   }
   scene_ = scene;
-  geometry_ = geom;
-  CopyVertices(mesh.vertices);
-  rtcCommitGeometry(geom);
-  rtcAttachGeometry(scene, geom);
   rtcCommitScene(scene);
 }
 
 EmbreeLocator::~EmbreeLocator() {
-  rtcReleaseGeometry(static_cast<RTCGeometry>(geometry_));
+  for (void* g : geometries_) rtcReleaseGeometry(static_cast<RTCGeometry>(g));
   rtcReleaseScene(static_cast<RTCScene>(scene_));
 }
 
-void EmbreeLocator::CopyVertices(const std::vector<Vec3>& vertices) {
-  for (size_t v = 0; v < vertex_count_; ++v) {
-    for (int k = 0; k < 3; ++k) vertex_buffer_[3 * v + k] = static_cast<float>(vertices[v][k]);
+void EmbreeLocator::InflateVertex(const std::vector<Vec3>& vertices, int v) {
+  // the float surface sits `inflation_` outside the double one (along the vertex normal), so a
+  // segment through a silhouette edge in double still meets the float triangle
+  Vec3 normal = Vec3::Zero();
+  for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
+    const auto& t = triangles_[ring_.ids[k]];
+    normal += TriangleCross(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
   }
+  const double len = normal.norm();
+  const Vec3 p = len > 0.0 ? Vec3(vertices[v] + (inflation_ / len) * normal) : vertices[v];
+  for (int k = 0; k < 3; ++k) vertex_buffer_[3 * v + k] = static_cast<float>(p[k]);
 }
 
-void EmbreeLocator::Update(const std::vector<Vec3>& vertices) {
-  // refit: new float vertices, then update buffer, commit geometry and scene
-  CopyVertices(vertices);
-  auto geom = static_cast<RTCGeometry>(geometry_);
-  rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
-  rtcCommitGeometry(geom);
+void EmbreeLocator::UpdateEdgeMargin(const std::vector<Vec3>& vertices, int t) {
+  // altitude = 2 area / edge length, smallest over the three edges
+  const auto& tri = triangles_[t];
+  const double twice_area = TriangleCross(vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]).norm();
+  double longest = 0.0;
+  for (int k = 0; k < 3; ++k) longest = std::max(longest, (vertices[tri[(k + 1) % 3]] - vertices[tri[k]]).norm());
+  const double altitude = longest > 0.0 ? twice_area / longest : 0.0;
+  edge_margin_[t] = altitude > 0.0 ? static_cast<float>(std::min(kInsideMargin * inflation_ / altitude, 1.0)) : 1.0f;
+}
+
+void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) {
+  // vertices whose position or normal changed: the moved ones and their neighbours
+  ++update_count_;
+  std::vector<int> affected;
+  for (int v : moved) {
+    for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
+      for (int corner : triangles_[ring_.ids[k]]) {
+        if (stamp_[corner] != update_count_) {
+          stamp_[corner] = update_count_;
+          affected.push_back(corner);
+        }
+      }
+    }
+  }
+  std::vector<char> dirty(geometries_.size(), 0);
+  for (int v : affected) {
+    InflateVertex(vertices, v);
+    for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) dirty[triangle_group_[ring_.ids[k]]] = 1;
+  }
+  for (int v : moved) {
+    for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) UpdateEdgeMargin(vertices, ring_.ids[k]);
+  }
+  // refit only the groups that hold a changed vertex, then the top level
+  for (size_t g = 0; g < geometries_.size(); ++g) {
+    if (!dirty[g]) continue;
+    auto geom = static_cast<RTCGeometry>(geometries_[g]);
+    rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
+    rtcCommitGeometry(geom);
+  }
   rtcCommitScene(static_cast<RTCScene>(scene_));
 }
 
-void EmbreeLocator::CollectAlongSegment(const Vec3& origin, const Vec3& dir, double length,
-                                        std::vector<int>* out) const {
+void EmbreeLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const Vec3& dir, double length,
+                                          std::vector<Candidate>* out) const {
+  // one ray over the segment, stretched a little at both ends (the exact test trims it again)
+  const double slack = 1e-4 * (1.0 + length);
+  const Vec3 o = origin - slack * dir;
   CollectContext ctx;
   rtcInitIntersectContext(&ctx.base);
   ctx.base.filter = CollectAllHits;
   ctx.out = out;
+  ctx.locator = this;
   RTCRayHit rh;
   std::memset(&rh, 0, sizeof(rh));
-  rh.ray.org_x = static_cast<float>(origin.x());
-  rh.ray.org_y = static_cast<float>(origin.y());
-  rh.ray.org_z = static_cast<float>(origin.z());
+  rh.ray.org_x = static_cast<float>(o.x());
+  rh.ray.org_y = static_cast<float>(o.y());
+  rh.ray.org_z = static_cast<float>(o.z());
   rh.ray.dir_x = static_cast<float>(dir.x());
   rh.ray.dir_y = static_cast<float>(dir.y());
   rh.ray.dir_z = static_cast<float>(dir.z());
   rh.ray.tnear = 0.0f;
-  rh.ray.tfar = static_cast<float>(length);
+  rh.ray.tfar = static_cast<float>(length + 2.0 * slack);
   rh.ray.mask = 0xFFFFFFFFu;  // Debian's Embree is built with ray masks
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  const size_t first = out->size();
   rtcIntersect1(static_cast<RTCScene>(scene_), &ctx.base, &rh);
-}
-
-void EmbreeLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const Vec3& dir, double length,
-                                          std::vector<int>* out) const {
-  // the float segment is stretched a little at both ends; the exact test trims it again
-  const double slack = 1e-4 * (1.0 + length);
-  const size_t before = out->size();
-  CollectAlongSegment(origin - slack * dir, dir, length + 2.0 * slack, out);
-  // a ray exactly along a silhouette edge or through a vertex can fall between a face and its
-  // neighbour seen edge-on: six parallel rays offset 10 um at 60 degrees reach the face
-  if (out->size() == before) {
-    const Vec3 u = dir.unitOrthogonal(), w = dir.cross(u);
-    for (int k = 0; k < 6; ++k) {
-      const double angle = 1.0471975511965976 * k;
-      const Vec3 offset = kEdgeOffset * (std::cos(angle) * u + std::sin(angle) * w);
-      CollectAlongSegment(origin - slack * dir + offset, dir, length + 2.0 * slack, out);
-    }
-  }
-  // a float hit on an edge or vertex may name the neighbour of the triangle the exact test
-  // accepts: every triangle sharing a vertex with a hit is a candidate too
+  // a hit near an edge or vertex may name the neighbour of the triangle the exact test accepts:
+  // the triangles around its corners are candidates too
   const size_t hits_end = out->size();
-  for (size_t i = before; i < hits_end; ++i) {
-    for (int corner : triangles_[(*out)[i]]) {
-      out->insert(out->end(), ring_.ids.begin() + ring_.offsets[corner], ring_.ids.begin() + ring_.offsets[corner + 1]);
+  for (size_t i = first; i < hits_end; ++i) {
+    if ((*out)[i].inside) continue;
+    for (int corner : triangles_[(*out)[i].triangle]) {
+      for (int k = ring_.offsets[corner]; k < ring_.offsets[corner + 1]; ++k) out->push_back({ring_.ids[k], false});
     }
   }
 }
 
-void EmbreeLocator::TrianglesNearPoint(int /*key*/, const Vec3& p, double radius, std::vector<int>* out) const {
+void EmbreeLocator::TrianglesNearPoint(int /*key*/, const Vec3& p, double radius, std::vector<Candidate>* out) const {
   RTCPointQuery query;
   query.x = static_cast<float>(p.x());
   query.y = static_cast<float>(p.y());
   query.z = static_cast<float>(p.z());
   query.time = 0.0f;
-  query.radius = static_cast<float>(radius * (1.0 + 1e-4) + 1e-6);
+  query.radius = static_cast<float>(radius * (1.0 + 1e-4) + inflation_ + 1e-6);
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
-  rtcPointQuery(static_cast<RTCScene>(scene_), &query, &context, CollectNearPrimitive, out);
+  NearContext near{out, this};
+  rtcPointQuery(static_cast<RTCScene>(scene_), &query, &context, CollectNearPrimitive, &near);
 }
 
 LocatorFactory MakeEmbreeLocatorFactory(std::shared_ptr<const EmbreeDevice> device) {

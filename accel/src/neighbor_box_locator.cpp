@@ -34,11 +34,11 @@ NeighborBoxLocator::NeighborBoxLocator(const TriMesh& mesh, const ContactOptions
   slack_ = half_size_ - search;
 }
 
-void NeighborBoxLocator::Update(const std::vector<Vec3>& vertices) {
+void NeighborBoxLocator::Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) {
   // track how far the master moved since the grid was built (lists stay valid within the slack)
-  vertices_ = vertices;
-  for (size_t v = 0; v < vertices_.size() && !grid_vertices_.empty(); ++v) {
-    master_drift_ = std::max(master_drift_, MaxAbs(vertices_[v] - grid_vertices_[v]));
+  for (int v : moved) {
+    vertices_[v] = vertices[v];
+    if (!grid_vertices_.empty()) master_drift_ = std::max(master_drift_, MaxAbs(vertices_[v] - grid_vertices_[v]));
   }
 }
 
@@ -128,26 +128,26 @@ void NeighborBoxLocator::Prepare(int slave_body, int step, const std::vector<int
 }
 
 void NeighborBoxLocator::TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
-                                               std::vector<int>* out) const {
+                                               std::vector<Candidate>* out) const {
   // the node's NaborSurf list, each surface tested exactly (segment-plane crossing, inside test)
   const double slack = 1e-9 * (1.0 + length);
   for (int t : lists_[prepared_body_][key].surfaces) {
     double dist = 0.0;
     if (SegmentCrossesTriangle(origin, dir, length, vertices_[triangles_[t][0]], vertices_[triangles_[t][1]],
                                vertices_[triangles_[t][2]], slack, &dist)) {
-      out->push_back(t);
+      out->push_back({t, true});
     }
   }
 }
 
-void NeighborBoxLocator::TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const {
+void NeighborBoxLocator::TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<Candidate>* out) const {
   // the list filtered by the current triangle bounds
   for (int t : lists_[prepared_body_][key].surfaces) {
     const Vec3& a = vertices_[triangles_[t][0]];
     const Vec3& b = vertices_[triangles_[t][1]];
     const Vec3& c = vertices_[triangles_[t][2]];
     const Vec3 nearest = p.cwiseMax(a.cwiseMin(b).cwiseMin(c)).cwiseMin(a.cwiseMax(b).cwiseMax(c));
-    if ((nearest - p).norm() <= radius) out->push_back(t);
+    if ((nearest - p).norm() <= radius) out->push_back({t, false});
   }
 }
 

@@ -63,18 +63,36 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   }
   bounds_min_.resize(n);
   bounds_max_.resize(n);
-  for (int i = 0; i < n; ++i) RefreshBounds(i);
+  chunk_min_.resize(n);
+  chunk_max_.resize(n);
+  for (int i = 0; i < n; ++i) InitBounds(i);
   touching_.resize(static_cast<size_t>(n) * n);
+  touching_mark_.resize(n);
 }
 
-void ContactEngine::RefreshBounds(int body) {
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (const Vec3& p : states_[body].vertices) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
+void ContactEngine::InitBounds(int body) {
+  // one box per fixed chunk of vertices (mesh order is spatially coherent) and one for the body
+  const std::vector<Vec3>& vertices = states_[body].vertices;
+  const std::size_t chunks = ChunkCount(vertices.size());
+  chunk_min_[body].assign(chunks, Vec3::Constant(INFINITY));
+  chunk_max_[body].assign(chunks, Vec3::Constant(-INFINITY));
+  std::vector<int> all(vertices.size());
+  for (std::size_t v = 0; v < all.size(); ++v) all[v] = static_cast<int>(v);
+  bounds_min_[body] = Vec3::Constant(INFINITY);
+  bounds_max_[body] = Vec3::Constant(-INFINITY);
+  GrowBounds(body, all);
+}
+
+void ContactEngine::GrowBounds(int body, const std::vector<int>& moved) {
+  // boxes only grow: after crush they still hold every vertex (a conservative cull)
+  const std::vector<Vec3>& vertices = states_[body].vertices;
+  for (int v : moved) {
+    const std::size_t c = static_cast<std::size_t>(v) / kChunkSize;
+    chunk_min_[body][c] = chunk_min_[body][c].cwiseMin(vertices[v]);
+    chunk_max_[body][c] = chunk_max_[body][c].cwiseMax(vertices[v]);
+    bounds_min_[body] = bounds_min_[body].cwiseMin(vertices[v]);
+    bounds_max_[body] = bounds_max_[body].cwiseMax(vertices[v]);
   }
-  bounds_min_[body] = lo;
-  bounds_max_[body] = hi;
 }
 
 bool ContactEngine::BoundsOverlap(int a, int b) const {
@@ -136,13 +154,21 @@ StepResult ContactEngine::Step(double dt) {
   return result;
 }
 
-std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, const std::vector<int>& touching) {
+std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, int slave_index,
+                                               const std::vector<int>& touching) {
   // slave nodes inside the master's bounds grown by the search reach, in chunks, in index order
   const double reach = options_.search_backoff + options_.toofar_maximum;
   const Vec3 lo = bounds_min_[master].array() - reach, hi = bounds_max_[master].array() + reach;
   const std::size_t nv = f.slave->vertices.size();
+  const Mat3 abs_rotation = f.r_slave_to_master.cwiseAbs();
+  const std::vector<Vec3>& box_min = chunk_min_[slave_index];
+  const std::vector<Vec3>& box_max = chunk_max_[slave_index];
   std::vector<std::vector<int>> inside(ChunkCount(nv));
   ForEachChunk(nv, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    // a chunk whose box misses the master's is skipped whole
+    const Vec3 centre = f.ToMaster(0.5 * (box_min[chunk] + box_max[chunk]));
+    const Vec3 half = abs_rotation * (0.5 * (box_max[chunk] - box_min[chunk]));
+    if (((centre + half).array() < lo.array()).any() || ((centre - half).array() > hi.array()).any()) return;
     for (std::size_t v = begin; v < end; ++v) {
       const Vec3 p = f.ToMaster(f.slave->vertices[v]);
       if ((p.array() >= lo.array()).all() && (p.array() <= hi.array()).all()) {
@@ -200,22 +226,23 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
 
-  const std::vector<int> candidates = CullCandidates(f, master, *touching);
+  const std::vector<int> candidates = CullCandidates(f, master, slave, *touching);
   diag->candidates += static_cast<long long>(candidates.size());
   locators_[master]->Prepare(slave, step_index_, candidates,
                              [&](int v) { return f.ToMaster(f.slave->vertices[v]); });
 
   // one parallel loop over fixed chunks of candidates; each chunk writes its own nodes and partials
   chunks_.resize(std::max(chunks_.size(), ChunkCount(candidates.size())));
-  const std::vector<int>& was = *touching;
+  // nodes touching at their last update, marked for constant-time look-up
+  std::vector<char>& was_touching = touching_mark_[slave];
+  was_touching.resize(f.slave->vertices.size(), 0);
+  for (int v : *touching) was_touching[v] = 1;
   ForEachChunk(candidates.size(), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     ChunkSums& out = chunks_[chunk];
     out.Clear();
-    for (std::size_t i = begin; i < end; ++i) {
-      const int v = candidates[i];
-      ProcessNode(f, v, std::binary_search(was.begin(), was.end(), v), dt, &out);
-    }
+    for (std::size_t i = begin; i < end; ++i) ProcessNode(f, candidates[i], was_touching[candidates[i]] != 0, dt, &out);
   });
+  for (int v : *touching) was_touching[v] = 0;
 
   // determinism: partial sums and node lists folded serially in chunk order
   PassSums sums;
@@ -239,8 +266,8 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
   // crushed nodes change the slave's triangles, bounds and search structure (refit)
   if (!moved.empty()) {
     UpdateTriangles(*f.slave_model, moved, f.slave);
-    RefreshBounds(slave);
-    locators_[slave]->Update(f.slave->vertices);
+    GrowBounds(slave, moved);
+    locators_[slave]->Update(f.slave->vertices, moved);
   }
   return sums;
 }
@@ -262,8 +289,9 @@ void ContactEngine::AddPairLoads(const std::vector<PassSums>& sums, std::vector<
   }
 }
 
-bool ContactEngine::ExamineTriangle(const PassFrame& f, int t, const Vec3& p, const Vec3& ray_dir, bool poly_normal,
-                                    const Located* best, Located* out) const {
+bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p,
+                                    const Vec3& ray_dir, bool poly_normal, const Located* best, Located* out) const {
+  const int t = candidate.triangle;
   const auto& tri = f.master_model->mesh.triangles[t];
   const Vec3& a = f.master->vertices[tri[0]];
   const Vec3& b = f.master->vertices[tri[1]];
@@ -275,8 +303,9 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, int t, const Vec3& p, co
   double depth = 0.0;
   if (!RayPlaneDistance(p, d, a, n, &depth)) return false;
   if (depth < -options_.search_backoff || depth > options_.toofar_maximum) return false;
+  // spec §2 inside test (InsidePolygonTest_CrossProd), unless the locator proved it with margin
   const Vec3 q = p + depth * d;
-  if (!InsideTriangleCrossProduct(q, a, b, c, n)) return false;
+  if (!(candidate.inside && !poly_normal) && !InsideTriangleCrossProduct(q, a, b, c, n)) return false;
   // best = smallest |depth|; ties keep the earlier (lower-index) triangle
   if (best == nullptr || std::abs(depth) < std::abs(best->depth)) {
     out->triangle = t;
@@ -287,7 +316,7 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, int t, const Vec3& p, co
   return true;
 }
 
-bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris, Located* out) const {
+bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>* tris, Located* out) const {
   const Vec3& p_slave = f.slave->vertices[v];
   const Vec3 p = f.ToMaster(p_slave);
   const Vec3 v_rel = f.RelativeVelocity(p_slave, p);
@@ -325,15 +354,22 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<int>* tris
   } else {
     f.master_locator->TrianglesAlongSegment(v, origin, dir, backoff + reach, tris);
   }
-  std::sort(tris->begin(), tris->end());
-  tris->erase(std::unique(tris->begin(), tris->end()), tris->end());
+  // determinism: by triangle index, each triangle once (kept as proven inside if any copy was)
+  if (tris->size() > 1) {
+    std::sort(tris->begin(), tris->end(), [](const Candidate& x, const Candidate& y) {
+      return x.triangle != y.triangle ? x.triangle < y.triangle : x.inside > y.inside;
+    });
+    tris->erase(std::unique(tris->begin(), tris->end(),
+                            [](const Candidate& x, const Candidate& y) { return x.triangle == y.triangle; }),
+                tris->end());
+  }
 
   // exact test of each candidate in triangle order, with the stop rule
   const int wanted = options_.stop_rule == StopRule::kAfterOne ? 1
                      : options_.stop_rule == StopRule::kBestOfTwo ? 2 : INT32_MAX;
   int accepted = 0;
-  for (int t : *tris) {
-    if (ExamineTriangle(f, t, p, dir, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
+  for (const Candidate& c : *tris) {
+    if (ExamineTriangle(f, c, p, dir, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
   }
   out->rel_velocity = v_rel;
   return accepted > 0;

@@ -37,11 +37,13 @@ TEST(LocatorAgreement, EmbreeFindsEveryTriangleTheOracleFinds) {
     // random short segments through the car's bounds, as Location casts them
     const Vec3 origin(box(rng), box(rng) * 0.5, box(rng) * 0.4);
     const Vec3 dir = Vec3(unit(rng), unit(rng), unit(rng)).normalized();
-    std::vector<int> exact, fast;
+    std::vector<Candidate> exact, found;
     brute.TrianglesAlongSegment(i, origin, dir, 0.3, &exact);
-    embree.TrianglesAlongSegment(i, origin, dir, 0.3, &fast);
+    embree.TrianglesAlongSegment(i, origin, dir, 0.3, &found);
+    std::vector<int> fast;
+    for (const Candidate& c : found) fast.push_back(c.triangle);
     std::sort(fast.begin(), fast.end());
-    for (int t : exact) EXPECT_TRUE(std::binary_search(fast.begin(), fast.end(), t)) << "segment " << i;
+    for (const Candidate& c : exact) EXPECT_TRUE(std::binary_search(fast.begin(), fast.end(), c.triangle)) << i;
     hits += static_cast<int>(exact.size());
   }
   EXPECT_GT(hits, 100);  // the sample really crosses the surface

@@ -8,10 +8,10 @@ namespace dymesh {
 class BruteForceLocator final : public Locator {
  public:
   explicit BruteForceLocator(const TriMesh& mesh);
-  void Update(const std::vector<Vec3>& vertices) override;
+  void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override;
   void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
-                             std::vector<int>* out) const override;
-  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const override;
+                             std::vector<Candidate>* out) const override;
+  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<Candidate>* out) const override;
 
  private:
   std::vector<std::array<int, 3>> triangles_;

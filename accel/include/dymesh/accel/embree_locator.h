@@ -1,6 +1,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "dymesh/core/locator.h"
 
@@ -22,7 +23,11 @@ class EmbreeDevice {
 };
 
 /// Candidate triangles from an Embree scene: every triangle a segment crosses (an intersection
-/// filter records each hit and lets traversal go on), or every triangle near a point (point query).
+/// filter records each hit and lets traversal go on; hits near an edge add the triangles around it),
+/// or every triangle near a point (point query). The float surface is inflated by a few ulps so that
+/// no segment the double-precision test accepts slips past a silhouette edge. The triangles are
+/// split into spatially compact groups, one Embree geometry each over a shared vertex buffer, so a
+/// crush refits only the groups it touched.
 class EmbreeLocator final : public Locator {
  public:
   EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const TriMesh& mesh);
@@ -30,22 +35,37 @@ class EmbreeLocator final : public Locator {
   EmbreeLocator(const EmbreeLocator&) = delete;
   EmbreeLocator& operator=(const EmbreeLocator&) = delete;
 
-  void Update(const std::vector<Vec3>& vertices) override;
+  void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override;
   void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
-                             std::vector<int>* out) const override;
-  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const override;
+                             std::vector<Candidate>* out) const override;
+  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<Candidate>* out) const override;
+
+  /// The Embree scene (RTCScene), for benchmarks that cast raw rays on the same BVH.
+  void* scene() const { return scene_; }
+
+  /// Mesh triangle of Embree's (geometry, primitive) pair.
+  int Triangle(unsigned geom_id, unsigned prim_id) const { return group_triangles_[group_first_[geom_id] + prim_id]; }
+
+  /// Smallest barycentric distance from the edges at which a hit on triangle t is surely inside it.
+  float EdgeMargin(int t) const { return edge_margin_[t]; }
 
  private:
-  void CopyVertices(const std::vector<Vec3>& vertices);
-  void CollectAlongSegment(const Vec3& origin, const Vec3& dir, double length, std::vector<int>* out) const;
+  void InflateVertex(const std::vector<Vec3>& vertices, int v);
+  void UpdateEdgeMargin(const std::vector<Vec3>& vertices, int t);
 
   std::shared_ptr<const EmbreeDevice> device_;
   void* scene_ = nullptr;
-  void* geometry_ = nullptr;
-  float* vertex_buffer_ = nullptr;  // Embree-owned float3 vertices (with padding)
-  size_t vertex_count_ = 0;
+  std::vector<void*> geometries_;      // one RTCGeometry per triangle group
+  std::vector<float> vertex_buffer_;   // shared float3 vertices (+ padding for 16-byte loads)
+  double inflation_ = 0.0;             // [m] float surface offset outward along the vertex normals
   std::vector<std::array<int, 3>> triangles_;
-  VertexTriangles ring_;            // triangles around each vertex (candidates beside a hit)
+  VertexTriangles ring_;               // triangles around each vertex
+  std::vector<int> group_first_;       // first slot of each group in group_triangles_ (n_groups + 1)
+  std::vector<int> group_triangles_;   // mesh triangles, group by group (n_triangles)
+  std::vector<int> triangle_group_;    // group of each mesh triangle (n_triangles)
+  std::vector<float> edge_margin_;     // barycentric margin of a sure inside hit (n_triangles)
+  std::vector<int> stamp_;             // scratch marks for Update (n_vertices)
+  int update_count_ = 0;
 };
 
 /// Factory for the contact engine; all locators share one device.

@@ -19,12 +19,12 @@ class NeighborBoxLocator final : public Locator {
   /// `options.global_search_box` is the box half-size (0: SetBoxSize, from the mesh extents).
   NeighborBoxLocator(const TriMesh& mesh, const ContactOptions& options);
 
-  void Update(const std::vector<Vec3>& vertices) override;
+  void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override;
   void Prepare(int slave_body, int step, const std::vector<int>& keys,
                const std::function<Vec3(int)>& position) override;
   void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
-                             std::vector<int>* out) const override;
-  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<int>* out) const override;
+                             std::vector<Candidate>* out) const override;
+  void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<Candidate>* out) const override;
 
   double box_half_size() const { return half_size_; }
   long long lists_built() const { return lists_built_; }

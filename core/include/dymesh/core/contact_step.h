@@ -75,7 +75,7 @@ class ContactEngine {
     ContactDiagnostics diag;
     double crush_energy = 0.0;            // [J] node-law work on the slave's nodes
     std::vector<int> touching, moved;     // ascending node indices
-    std::vector<int> scratch;             // candidate triangles of one node
+    std::vector<Candidate> scratch;       // candidate triangles of one node
     void Clear() {
       sums = PassSums{};
       diag = ContactDiagnostics{};
@@ -86,24 +86,27 @@ class ContactEngine {
   };
   PassSums RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt,
                    ContactDiagnostics* diag);
-  std::vector<int> CullCandidates(const PassFrame& f, int master, const std::vector<int>& touching);
+  std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const std::vector<int>& touching);
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const;
   void AddPairLoads(const std::vector<PassSums>& sums, std::vector<Vec3>* force_earth,
                     std::vector<Vec3>* moment_earth);
-  bool LocateNode(const PassFrame& f, int v, std::vector<int>* scratch, Located* out) const;
-  bool ExamineTriangle(const PassFrame& f, int t, const Vec3& p, const Vec3& ray_dir, bool poly_normal,
-                       const Located* best, Located* out) const;
+  bool LocateNode(const PassFrame& f, int v, std::vector<Candidate>* scratch, Located* out) const;
+  bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
+                       bool poly_normal, const Located* best, Located* out) const;
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
                      ContactDiagnostics* diag, double* crush_energy, Vec3* pushback_dir_slave) const;
   bool BoundsOverlap(int a, int b) const;
-  void RefreshBounds(int body);
+  void InitBounds(int body);
+  void GrowBounds(int body, const std::vector<int>& moved);
 
   std::vector<std::shared_ptr<const BodyModel>> models_;
   std::vector<BodyState> states_;
   std::vector<std::unique_ptr<Locator>> locators_;
-  std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame bounds of the current vertices, per body
+  std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame box holding every vertex so far, per body
+  std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
   std::vector<std::array<std::vector<int>, 2>> touching_;
-  std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop  // per pair (a<b): nodes of a, of b touching the other
+  std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop
+  std::vector<std::vector<char>> touching_mark_;  // per body: 1 for nodes touching the current master  // per pair (a<b): nodes of a, of b touching the other
   ContactOptions options_;
   int step_index_ = 0;
 };

@@ -1,0 +1,109 @@
+#include "step_timing.h"
+
+#include <embree3/rtcore.h>
+
+#include <chrono>
+#include <cstring>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+
+#include "dymesh/accel/embree_locator.h"
+#include "dymesh/core/contact_step.h"
+#include "dymesh/core/parallel.h"
+
+namespace dymesh::bench {
+namespace {
+
+constexpr double kDt = 0.0005;  // [s] collision time step
+
+double Seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// an Embree locator that can record the segments it is asked for, to replay them as raw rays
+class RecordingLocator final : public Locator {
+ public:
+  RecordingLocator(std::shared_ptr<const EmbreeDevice> device, const TriMesh& mesh) : inner_(std::move(device), mesh) {}
+  void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override {
+    inner_.Update(vertices, moved);
+  }
+  void TrianglesAlongSegment(int key, const Vec3& o, const Vec3& d, double length,
+                             std::vector<Candidate>* out) const override {
+    if (recording_) segments_.local().push_back({o, d, length});
+    inner_.TrianglesAlongSegment(key, o, d, length, out);
+  }
+  void TrianglesNearPoint(int key, const Vec3& p, double r, std::vector<Candidate>* out) const override {
+    inner_.TrianglesNearPoint(key, p, r, out);
+  }
+  void SetRecording(bool on) { recording_ = on; }
+
+  // the recorded segments as raw closest-hit rays on the same scene, in parallel; returns seconds
+  double ReplayRaw(long long* count) {
+    std::vector<Segment> all;
+    for (auto& list : segments_) {
+      all.insert(all.end(), list.begin(), list.end());
+      list.clear();
+    }
+    *count += static_cast<long long>(all.size());
+    auto scene = static_cast<RTCScene>(inner_.scene());
+    const auto t0 = std::chrono::steady_clock::now();
+    ForEachChunk(all.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      for (std::size_t i = begin; i < end; ++i) {
+        RTCRayHit rh;
+        std::memset(&rh, 0, sizeof(rh));
+        for (int k = 0; k < 3; ++k) {
+          (&rh.ray.org_x)[k] = static_cast<float>(all[i].o[k]);
+          (&rh.ray.dir_x)[k] = static_cast<float>(all[i].d[k]);
+        }
+        rh.ray.tfar = static_cast<float>(all[i].length);
+        rh.ray.mask = 0xFFFFFFFFu;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene, &context, &rh);
+      }
+    });
+    return Seconds(std::chrono::steady_clock::now() - t0);
+  }
+
+ private:
+  struct Segment {
+    Vec3 o, d;
+    double length;
+  };
+  EmbreeLocator inner_;
+  bool recording_ = false;
+  mutable tbb::enumerable_thread_specific<std::vector<Segment>> segments_;
+};
+
+}  // namespace
+
+StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int steps) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  auto device = std::make_shared<const EmbreeDevice>();
+  std::vector<RecordingLocator*> recorders;
+  const LocatorFactory factory = [&](const TriMesh& mesh) {
+    auto locator = std::make_unique<RecordingLocator>(device, mesh);
+    recorders.push_back(locator.get());
+    return locator;
+  };
+  ContactEngine engine({setup.master, setup.slave}, {setup.master_pose, setup.slave_pose}, ContactOptions{}, factory);
+  // one collision step, then the slave closes by its speed (no dynamics: a steady pulse)
+  RigidState slave = setup.slave_pose;
+  auto step = [&] {
+    engine.Step(kDt);
+    slave.position += slave.velocity * kDt;
+    engine.SetRigidState(1, slave);
+  };
+  for (int k = 0; k < warmup; ++k) step();
+  StepTiming timing;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int k = 0; k < steps; ++k) step();
+  timing.step_seconds = Seconds(std::chrono::steady_clock::now() - t0) / steps;
+  // the same kind of step once more, recorded, and its segments cast raw
+  for (RecordingLocator* r : recorders) r->SetRecording(true);
+  step();
+  for (RecordingLocator* r : recorders) timing.raycast_seconds += r->ReplayRaw(&timing.segments);
+  return timing;
+}
+
+}  // namespace dymesh::bench

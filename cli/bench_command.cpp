@@ -1,0 +1,110 @@
+#include "bench_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <functional>
+
+#include <nlohmann/json.hpp>
+
+#include "contact_setup.h"
+#include "locate_rates.h"
+#include "step_timing.h"
+
+namespace dymesh::cli {
+namespace {
+
+constexpr double kPenetration = 0.10;  // [m]
+constexpr double kSpeed = 13.4;        // [m/s] 30 mph
+constexpr size_t kNeighborBoxSample = 4000;
+
+// best of three timings of one pass over the segments [segments/s]
+double Rate(size_t segments, const std::function<void()>& locate) {
+  double best = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    locate();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    best = std::max(best, segments / s);
+  }
+  return best;
+}
+
+bench::RaySet Sample(const bench::RaySet& rays, size_t limit) {
+  const size_t stride = std::max<size_t>(1, (rays.size() + limit - 1) / limit);
+  bench::RaySet sample;
+  sample.length = rays.length;
+  for (size_t i = 0; i < rays.size(); i += stride) {
+    sample.origin.push_back(rays.origin[i]);
+    sample.dir.push_back(rays.dir[i]);
+  }
+  return sample;
+}
+
+}  // namespace
+
+int RunBench(const BenchRequest& request) {
+  // the two meshes in contact, and one pass's Location segments
+  const bench::ContactSetup setup =
+      bench::PlaceInContact(bench::LoadUserMesh(request.master, request.axes),
+                            bench::LoadUserMesh(request.slave, request.axes), kPenetration, kSpeed);
+  const ContactOptions options;
+  const bench::RaySet rays = bench::PassRays(setup, options);
+  const TriMesh& master = setup.master->mesh;
+  if (rays.size() == 0) {
+    std::fprintf(stderr, "error: the meshes do not reach each other when placed in contact\n");
+    return 2;
+  }
+  // locate rates on the same segments (one thread each)
+  auto device = std::make_shared<const EmbreeDevice>();
+  const EmbreeLocator embree(device, master);
+  const BodyState rest = MakeBodyState(*setup.master, RigidState{});
+  const double raw = Rate(rays.size(), [&] { bench::LocateWithRawEmbree(embree, rays); });
+  const double engine = Rate(rays.size(), [&] { bench::LocateWithEmbreeLocator(embree, master, rest.tri_normal, rays); });
+  const bench::RaySet sample = Sample(rays, kNeighborBoxSample);
+  NeighborBoxLocator boxes(master, options);
+  int step = 0;
+  const double neighbor = Rate(sample.size(), [&] {
+    bench::LocateWithNeighborBox(&boxes, step, sample, options.search_backoff);
+    step += options.calc_nabor_interval;  // every timed pass rebuilds its lists, as a new contact does
+  });
+  const bench::CgalTree cgal(master);
+  const double cgal_rate = Rate(rays.size(), [&] { cgal.Locate(rays); });
+  // whole collision steps at one and N threads, and the memory of the master body
+  const bench::StepTiming one = bench::MeasureSteps(setup, 1, 2, 5);
+  const bench::StepTiming many = bench::MeasureSteps(setup, request.threads, 2, 5);
+  const bench::BodyMemory memory = bench::MeasureBodyMemory(*setup.master);
+  const double nt = static_cast<double>(master.triangles.size());
+
+  nlohmann::json j = {
+      {"master_triangles", master.triangles.size()},
+      {"slave_triangles", setup.slave->mesh.triangles.size()},
+      {"segments", rays.size()},
+      {"locate_per_second", {{"engine", engine}, {"raw_embree", raw}, {"neighbor_box", neighbor}, {"cgal", cgal_rate}}},
+      {"ratio_to_raw_embree",
+       {{"engine", engine / raw}, {"neighbor_box", neighbor / raw}, {"cgal", cgal_rate / raw}}},
+      {"step_ms", {{"threads_1", 1e3 * one.step_seconds}, {"threads_n", 1e3 * many.step_seconds}}},
+      {"threads", request.threads},
+      {"speedup", one.step_seconds / many.step_seconds},
+      {"step_vs_raycast", many.step_seconds / many.raycast_seconds},
+      {"bytes_per_triangle", memory.total() / nt},
+  };
+  if (request.json) {
+    std::printf("%s\n", j.dump(2).c_str());
+    return 0;
+  }
+  std::printf("master %zu triangles, slave %zu triangles, %zu Location segments per pass\n", master.triangles.size(),
+              setup.slave->mesh.triangles.size(), rays.size());
+  std::printf("locate (1 thread)       segments/s    vs raw Embree\n");
+  std::printf("  engine (Embree)     %12.0f    %6.2fx\n", engine, engine / raw);
+  std::printf("  raw Embree          %12.0f    %6.2fx\n", raw, 1.0);
+  std::printf("  neighbour box       %12.0f    %6.3fx   (sample of %zu)\n", neighbor, neighbor / raw, sample.size());
+  std::printf("  CGAL AABB tree      %12.0f    %6.2fx\n", cgal_rate, cgal_rate / raw);
+  std::printf("collision step        %.3f ms at 1 thread, %.3f ms at %d threads (%.2fx); %.2fx its ray casts\n",
+              1e3 * one.step_seconds, 1e3 * many.step_seconds, request.threads, one.step_seconds / many.step_seconds,
+              many.step_seconds / many.raycast_seconds);
+  std::printf("memory                %.0f bytes per triangle (model %.0f, state %.0f, Embree %.0f)\n",
+              memory.total() / nt, memory.model / nt, memory.state / nt, memory.embree / nt);
+  return 0;
+}
+
+}  // namespace dymesh::cli
