@@ -15,6 +15,7 @@ struct RunRequest {
   std::string out_dir = "out";
   bool quiet = false;     ///< no progress, no summary: errors only
   bool terminal = false;  ///< `out` is a terminal (progress bar rather than periodic lines)
+  std::string locator = "embree";  ///< search: "embree", "neighbor_box" (DyMESH's own) or "brute_force"
 };
 
 /// Runs a scenario and writes its outputs. `interrupts()` counts the stop requests received so far

@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
   run->add_option("scenario", request.scenario_path, "scenario JSON file")->required();
   run->add_option("--out", request.out_dir, "output folder (created if missing)");
   run->add_flag("-q,--quiet", request.quiet, "print nothing but errors (no progress, no summary)");
+  run->add_option("--locator", request.locator, "search: embree (default), neighbor_box (DyMESH's), brute_force")
+      ->check(CLI::IsMember({"embree", "neighbor_box", "brute_force"}));
   // check: validate without running
   std::string check_path;
   CLI::App* check = app.add_subcommand("check", "validate a scenario and its meshes without running; print mesh statistics");

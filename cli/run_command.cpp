@@ -5,7 +5,9 @@
 
 #include "commands.h"
 #include "format.h"
+#include "dymesh/accel/brute_force_locator.h"
 #include "dymesh/accel/embree_locator.h"
+#include "dymesh/accel/neighbor_box_locator.h"
 #include "dymesh/core/results.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/simulation.h"
@@ -37,13 +39,19 @@ void PrintOutputs(const WrittenOutputs& w, const std::string& dir, bool quiet, s
   for (const std::string& path : w.not_written) err << "  " << path << "\n";
 }
 
+// the search the user chose; all give the same results, at different speeds
+LocatorFactory MakeLocatorFactory(const std::string& name, const ContactOptions& options) {
+  if (name == "neighbor_box") return MakeNeighborBoxLocatorFactory(options);
+  if (name == "brute_force") return MakeBruteForceLocatorFactory();
+  return MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>());
+}
+
 }  // namespace
 
 int RunCommand(const RunRequest& request, const std::function<int()>& interrupts, std::ostream& out,
                std::ostream& err) {
   const Scenario scenario = LoadScenario(request.scenario_path);
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  Simulation sim(scenario, MakeLocatorFactory(request.locator, scenario.contact));
   // simulate, with progress, until done or interrupted
   ProgressReporter::Options options;
   options.terminal = request.terminal;
