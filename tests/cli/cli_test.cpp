@@ -156,5 +156,40 @@ TEST_F(Cli, InterruptStopsAtTheNextStepAndWritesWhatIsDone) {
   for (const auto& entry : fs::directory_iterator(dir_ / "out")) EXPECT_NE(entry.path().extension(), ".tmp");
 }
 
+TEST_F(Cli, EveryLocatorGivesTheSameRun) {
+  // the three searches differ only in speed: identical summaries
+  const std::string scenario = Write("boxes.json", BoxScenario().dump());
+  std::vector<Json> bodies;
+  for (const char* locator : {"embree", "neighbor_box", "brute_force"}) {
+    const std::string out = (dir_ / locator).string();
+    const ProcessResult r = Dymesh({"run", scenario, "--out", out, "--quiet", "--locator", locator});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    bodies.push_back(Json::parse(testing::ReadFile(fs::path(out) / "summary.json"))["bodies"]);
+  }
+  EXPECT_GT(bodies[0][0]["max_crush"].get<double>(), 1.0);  // [in] the box crushed
+  EXPECT_EQ(bodies[1], bodies[0]);
+  EXPECT_EQ(bodies[2], bodies[0]);
+}
+
+TEST_F(Cli, BenchPrintsItsFiguresForUserMeshes) {
+  // the small car against itself: every figure present and positive (speeds are not asserted here)
+  const std::string mesh = std::string(DYMESH_DATA_DIR) + "/meshes/torcs_p406-lod6.obj";
+  const ProcessResult r = Dymesh({"bench", "--master", mesh, "--slave", mesh, "--axes=x,z,-y", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_EQ(j["master_triangles"].get<int>(), 1611);
+  EXPECT_GT(j["segments"].get<int>(), 0);
+  for (const char* key : {"engine", "raw_embree", "neighbor_box", "cgal"}) EXPECT_GT(j["locate_per_second"][key].get<double>(), 0.0) << key;
+  EXPECT_GT(j["step_ms"]["threads_1"].get<double>(), 0.0);
+  EXPECT_GT(j["bytes_per_triangle"].get<double>(), 100.0);
+  EXPECT_LT(j["bytes_per_triangle"].get<double>(), 400.0);  // the memory target of issue 3
+}
+
+TEST_F(Cli, BenchRefusesAMissingMesh) {
+  const ProcessResult r = Dymesh({"bench", "--master", "nope.obj", "--slave", "nope.obj"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("nope.obj"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace dymesh
