@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 
@@ -77,6 +78,17 @@ RaySet PassRays(const ContactSetup& setup, const ContactOptions& options) {
     rays.dir.push_back(dir);
   }
   return rays;
+}
+
+RaySet SampleRays(const RaySet& rays, size_t limit) {
+  const size_t stride = std::max<size_t>(1, (rays.size() + limit - 1) / limit);
+  RaySet sample;
+  sample.length = rays.length;
+  for (size_t i = 0; i < rays.size(); i += stride) {
+    sample.origin.push_back(rays.origin[i]);
+    sample.dir.push_back(rays.dir[i]);
+  }
+  return sample;
 }
 
 namespace {

@@ -35,6 +35,9 @@ struct RaySet {
 };
 RaySet PassRays(const ContactSetup& setup, const ContactOptions& options);
 
+/// Every k-th segment, at most `limit` of them (for searches too slow to take them all).
+RaySet SampleRays(const RaySet& rays, size_t limit);
+
 /// Bytes one deformable body needs: model (mesh, adjacency, surfaces), state and Embree scene.
 struct BodyMemory {
   size_t model = 0, state = 0, embree = 0;

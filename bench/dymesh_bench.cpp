@@ -65,10 +65,11 @@ const Fixture& GetFixture(const Rung& rung) {
   return *slot;
 }
 
-// items, triangle count, located fraction and the ratio to raw Embree
-void Report(benchmark::State& state, const Fixture& f, size_t located) {
-  const double n = static_cast<double>(f.rays.size());
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * f.rays.size()));
+// items, triangle count, located fraction and the ratio to raw Embree (on `rays`, default all)
+void Report(benchmark::State& state, const Fixture& f, size_t located, const RaySet* rays = nullptr) {
+  const RaySet& used = rays ? *rays : f.rays;
+  const double n = static_cast<double>(used.size());
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * used.size()));
   state.counters["triangles"] = static_cast<double>(f.setup.master->mesh.triangles.size());
   state.counters["segments"] = n;
   state.counters["located_fraction"] = located / n;
@@ -90,34 +91,17 @@ void BM_LocateEmbreeLocator(benchmark::State& state) {
   Report(state, f, located);
 }
 
-// every k-th segment, at most `limit` of them (the neighbour box is too slow for all at 1M+)
-RaySet Sample(const RaySet& rays, size_t limit) {
-  const size_t stride = std::max<size_t>(1, (rays.size() + limit - 1) / limit);
-  RaySet sample;
-  sample.length = rays.length;
-  for (size_t i = 0; i < rays.size(); i += stride) {
-    sample.origin.push_back(rays.origin[i]);
-    sample.dir.push_back(rays.dir[i]);
-  }
-  return sample;
-}
-
 void BM_LocateNeighborBox(benchmark::State& state) {
   // lists rebuilt every CALC_NABOR_INTERVAL = 5 steps, as DyMESH: ten queries, two rebuilds; at the
   // largest sizes an evenly spread sample of 4000 segments (the rate is per segment)
   const Fixture& f = GetFixture(kLadder[state.range(0)]);
-  const RaySet rays = Sample(f.rays, 4000);
+  const RaySet rays = SampleRays(f.rays, 4000);
   ContactOptions options;
   NeighborBoxLocator boxes(f.setup.master->mesh, options);
   size_t located = 0;
   int step = 0;
   for (auto _ : state) located = LocateWithNeighborBox(&boxes, step++, rays, options.search_backoff);
-  const double n = static_cast<double>(rays.size());
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * rays.size()));
-  state.counters["triangles"] = static_cast<double>(f.setup.master->mesh.triangles.size());
-  state.counters["segments"] = n;
-  state.counters["located_fraction"] = located / n;
-  state.counters["vs_raw_embree"] = benchmark::Counter(n / f.raw_rate, benchmark::Counter::kIsIterationInvariantRate);
+  Report(state, f, located, &rays);
 }
 
 void BM_LocateBruteForce(benchmark::State& state) {

@@ -29,17 +29,6 @@ double Rate(size_t segments, const std::function<void()>& locate) {
   return best;
 }
 
-bench::RaySet Sample(const bench::RaySet& rays, size_t limit) {
-  const size_t stride = std::max<size_t>(1, (rays.size() + limit - 1) / limit);
-  bench::RaySet sample;
-  sample.length = rays.length;
-  for (size_t i = 0; i < rays.size(); i += stride) {
-    sample.origin.push_back(rays.origin[i]);
-    sample.dir.push_back(rays.dir[i]);
-  }
-  return sample;
-}
-
 }  // namespace
 
 int RunBench(const BenchRequest& request) {
@@ -60,7 +49,7 @@ int RunBench(const BenchRequest& request) {
   const BodyState rest = MakeBodyState(*setup.master, RigidState{});
   const double raw = Rate(rays.size(), [&] { bench::LocateWithRawEmbree(embree, rays); });
   const double engine = Rate(rays.size(), [&] { bench::LocateWithEmbreeLocator(embree, master, rest.tri_normal, rays); });
-  const bench::RaySet sample = Sample(rays, kNeighborBoxSample);
+  const bench::RaySet sample = bench::SampleRays(rays, kNeighborBoxSample);
   NeighborBoxLocator boxes(master, options);
   int step = 0;
   const double neighbor = Rate(sample.size(), [&] {
