@@ -54,7 +54,9 @@ class ContactEngine {
   void SetRigidState(int i, const RigidState& rigid) { states_[i].rigid = rigid; }
 
   /// One collision time step of length dt [s] at the current poses: updates crush and returns the
-  /// collision loads at each CG. Determinism: pairs, passes and nodes run in a fixed order.
+  /// collision loads at each CG. Call from one thread at a time (one engine per run).
+  /// Threading: each pass's slave nodes run on oneTBB in fixed chunks of 256.
+  /// Determinism: chunk partials fold in chunk order; results are bit-identical at any thread count.
   StepResult Step(double dt);
 
  private:
