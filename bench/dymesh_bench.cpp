@@ -154,6 +154,7 @@ void BM_RefitVersusRebuild(benchmark::State& state) {
   for (auto _ : state) {
     if (state.range(1) == 0) {
       locator.Update(crushed, moved);
+      locator.Commit();
     } else {
       EmbreeLocator fresh(f.device, f.setup.master->mesh);
       benchmark::DoNotOptimize(fresh.scene());

@@ -26,6 +26,10 @@ class RecordingLocator final : public Locator {
   void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override {
     inner_.Update(vertices, moved);
   }
+  void Prepare(int slave_body, int step, const std::vector<int>& keys,
+               const std::function<Vec3(int)>& position) override {
+    inner_.Prepare(slave_body, step, keys, position);
+  }
   void TrianglesAlongSegment(int key, const Vec3& o, const Vec3& d, double length,
                              std::vector<Candidate>* out) const override {
     if (recording_) segments_.local().push_back({o, d, length});

@@ -191,14 +191,26 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
   for (int v : moved) {
     for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) UpdateEdgeMargin(vertices, ring_.ids[k]);
   }
-  // refit only the groups that hold a changed vertex, then the top level
+  // refit only the groups that hold a changed vertex; the scene commits before its next queries
   for (size_t g = 0; g < geometries_.size(); ++g) {
     if (!dirty[g]) continue;
     auto geom = static_cast<RTCGeometry>(geometries_[g]);
     rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
     rtcCommitGeometry(geom);
+    uncommitted_ = true;
   }
+}
+
+void EmbreeLocator::Prepare(int /*slave_body*/, int /*step*/, const std::vector<int>& /*keys*/,
+                            const std::function<Vec3(int)>& /*position*/) {
+  Commit();
+}
+
+void EmbreeLocator::Commit() {
+  // a body that is never a master (crushed against a rigid barrier) never pays for a commit
+  if (!uncommitted_) return;
   rtcCommitScene(static_cast<RTCScene>(scene_));
+  uncommitted_ = false;
 }
 
 void EmbreeLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const Vec3& dir, double length,

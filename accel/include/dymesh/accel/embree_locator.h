@@ -35,7 +35,13 @@ class EmbreeLocator final : public Locator {
   EmbreeLocator(const EmbreeLocator&) = delete;
   EmbreeLocator& operator=(const EmbreeLocator&) = delete;
 
+  /// Refits the touched groups; the scene itself is committed by Prepare (or Commit).
   void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override;
+  /// Commits a pending refit before this body is searched.
+  void Prepare(int slave_body, int step, const std::vector<int>& keys,
+               const std::function<Vec3(int)>& position) override;
+  /// Commits a pending refit (orchestrating thread; before any query after Update).
+  void Commit();
   void TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
                              std::vector<Candidate>* out) const override;
   void TrianglesNearPoint(int key, const Vec3& p, double radius, std::vector<Candidate>* out) const override;
@@ -66,6 +72,7 @@ class EmbreeLocator final : public Locator {
   std::vector<float> edge_margin_;     // barycentric margin of a sure inside hit (n_triangles)
   std::vector<int> stamp_;             // scratch marks for Update (n_vertices)
   int update_count_ = 0;
+  bool uncommitted_ = false;           // groups refit since the last scene commit
 };
 
 /// Factory for the contact engine; all locators share one device.
