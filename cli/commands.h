@@ -16,6 +16,7 @@ struct RunRequest {
   bool quiet = false;     ///< no progress, no summary: errors only
   bool terminal = false;  ///< `out` is a terminal (progress bar rather than periodic lines)
   std::string locator = "embree";  ///< search: "embree", "neighbor_box" (DyMESH's own) or "brute_force"
+  int threads = 0;                 ///< worker threads (0: all cores); results do not depend on it
 };
 
 /// Runs a scenario and writes its outputs. `interrupts()` counts the stop requests received so far

@@ -63,6 +63,8 @@ int main(int argc, char** argv) {
   run->add_flag("-q,--quiet", request.quiet, "print nothing but errors (no progress, no summary)");
   run->add_option("--locator", request.locator, "search: embree (default), neighbor_box (DyMESH's), brute_force")
       ->check(CLI::IsMember({"embree", "neighbor_box", "brute_force"}));
+  run->add_option("--threads", request.threads, "worker threads (default: all cores); results are identical")
+      ->check(CLI::PositiveNumber);
   // check: validate without running
   std::string check_path;
   CLI::App* check = app.add_subcommand("check", "validate a scenario and its meshes without running; print mesh statistics");

@@ -1,6 +1,9 @@
 // dymesh run: simulate, report progress, write the outputs; stops cleanly when interrupted.
 #include <cstdio>
 #include <memory>
+#include <optional>
+
+#include <tbb/global_control.h>
 #include <sstream>
 
 #include "commands.h"
@@ -51,6 +54,9 @@ LocatorFactory MakeLocatorFactory(const std::string& name, const ContactOptions&
 int RunCommand(const RunRequest& request, const std::function<int()>& interrupts, std::ostream& out,
                std::ostream& err) {
   const Scenario scenario = LoadScenario(request.scenario_path);
+  // the thread count changes the speed only (chunked, deterministic reductions)
+  std::optional<tbb::global_control> thread_limit;
+  if (request.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, request.threads);
   Simulation sim(scenario, MakeLocatorFactory(request.locator, scenario.contact));
   // simulate, with progress, until done or interrupted
   ProgressReporter::Options options;

@@ -171,6 +171,21 @@ TEST_F(Cli, EveryLocatorGivesTheSameRun) {
   EXPECT_EQ(bodies[2], bodies[0]);
 }
 
+TEST_F(Cli, ThreadCountDoesNotChangeTheOutputs) {
+  // one and two worker threads: byte-identical summary and time history
+  const std::string scenario = Write("boxes.json", BoxScenario().dump());
+  std::vector<std::string> summaries, histories;
+  for (const char* threads : {"1", "2"}) {
+    const std::string out = (dir_ / (std::string("t") + threads)).string();
+    const ProcessResult r = Dymesh({"run", scenario, "--out", out, "--quiet", "--threads", threads});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    summaries.push_back(testing::ReadFile(fs::path(out) / "summary.json"));
+    histories.push_back(testing::ReadFile(fs::path(out) / "history.csv"));
+  }
+  EXPECT_EQ(summaries[1], summaries[0]);
+  EXPECT_EQ(histories[1], histories[0]);
+}
+
 TEST_F(Cli, BenchPrintsItsFiguresForUserMeshes) {
   // the small car against itself: every figure present and positive (speeds are not asserted here)
   const std::string mesh = std::string(DYMESH_DATA_DIR) + "/meshes/torcs_p406-lod6.obj";
