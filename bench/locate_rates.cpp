@@ -44,27 +44,28 @@ size_t LocateWithEmbreeLocator(const EmbreeLocator& locator, const TriMesh& mast
   return located;
 }
 
-size_t LocateWithRawEmbree(const EmbreeLocator& locator, const RaySet& rays) {
-  auto scene = static_cast<RTCScene>(locator.scene());
+size_t RawClosestHits(void* scene, const RaySet& rays, size_t begin, size_t end) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   size_t located = 0;
-  for (size_t i = 0; i < rays.size(); ++i) {
+  for (size_t i = begin; i < end; ++i) {
     RTCRayHit rh;
     std::memset(&rh, 0, sizeof(rh));
-    rh.ray.org_x = static_cast<float>(rays.origin[i].x());
-    rh.ray.org_y = static_cast<float>(rays.origin[i].y());
-    rh.ray.org_z = static_cast<float>(rays.origin[i].z());
-    rh.ray.dir_x = static_cast<float>(rays.dir[i].x());
-    rh.ray.dir_y = static_cast<float>(rays.dir[i].y());
-    rh.ray.dir_z = static_cast<float>(rays.dir[i].z());
+    for (int k = 0; k < 3; ++k) {
+      (&rh.ray.org_x)[k] = static_cast<float>(rays.origin[i][k]);
+      (&rh.ray.dir_x)[k] = static_cast<float>(rays.dir[i][k]);
+    }
     rh.ray.tfar = static_cast<float>(rays.length);
     rh.ray.mask = 0xFFFFFFFFu;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene, &context, &rh);
+    rtcIntersect1(static_cast<RTCScene>(scene), &context, &rh);
     located += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
   }
   return located;
+}
+
+size_t LocateWithRawEmbree(const EmbreeLocator& locator, const RaySet& rays) {
+  return RawClosestHits(locator.scene(), rays, 0, rays.size());
 }
 
 size_t LocateWithNeighborBox(NeighborBoxLocator* locator, int step, const RaySet& rays, double backoff) {

@@ -15,6 +15,9 @@ namespace dymesh::bench {
 size_t LocateWithEmbreeLocator(const EmbreeLocator& locator, const TriMesh& master,
                                const std::vector<Vec3>& normals, const RaySet& rays);
 
+/// Raw closest-hit rtcIntersect1 on `scene` (an RTCScene) for segments [begin, end); returns the hits.
+size_t RawClosestHits(void* scene, const RaySet& rays, size_t begin, size_t end);
+
 /// Raw rtcIntersect1 (closest hit, no filter, no exact test) on the locator's own scene: the limit.
 size_t LocateWithRawEmbree(const EmbreeLocator& locator, const RaySet& rays);
 

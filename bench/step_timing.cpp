@@ -1,9 +1,6 @@
 #include "step_timing.h"
 
-#include <embree3/rtcore.h>
-
 #include <chrono>
-#include <cstring>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
@@ -11,6 +8,7 @@
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/core/contact_step.h"
 #include "dymesh/core/parallel.h"
+#include "locate_rates.h"
 
 namespace dymesh::bench {
 namespace {
@@ -41,30 +39,21 @@ class RecordingLocator final : public Locator {
   void SetRecording(bool on) { recording_ = on; }
 
   // the recorded segments as raw closest-hit rays on the same scene, in parallel; returns seconds
+  // (every Location segment has the same length: search_backoff + toofar_maximum)
   double ReplayRaw(long long* count) {
-    std::vector<Segment> all;
+    RaySet rays;
     for (auto& list : segments_) {
-      all.insert(all.end(), list.begin(), list.end());
+      for (const Segment& s : list) {
+        rays.origin.push_back(s.o);
+        rays.dir.push_back(s.d);
+        rays.length = s.length;
+      }
       list.clear();
     }
-    *count += static_cast<long long>(all.size());
-    auto scene = static_cast<RTCScene>(inner_.scene());
+    *count += static_cast<long long>(rays.size());
     const auto t0 = std::chrono::steady_clock::now();
-    ForEachChunk(all.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      for (std::size_t i = begin; i < end; ++i) {
-        RTCRayHit rh;
-        std::memset(&rh, 0, sizeof(rh));
-        for (int k = 0; k < 3; ++k) {
-          (&rh.ray.org_x)[k] = static_cast<float>(all[i].o[k]);
-          (&rh.ray.dir_x)[k] = static_cast<float>(all[i].d[k]);
-        }
-        rh.ray.tfar = static_cast<float>(all[i].length);
-        rh.ray.mask = 0xFFFFFFFFu;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(scene, &context, &rh);
-      }
+    ForEachChunk(rays.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
+      RawClosestHits(inner_.scene(), rays, begin, end);
     });
     return Seconds(std::chrono::steady_clock::now() - t0);
   }

@@ -15,7 +15,7 @@ void BruteForceLocator::Update(const std::vector<Vec3>& vertices, const std::vec
 void BruteForceLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const Vec3& dir, double length,
                                               std::vector<Candidate>* out) const {
   // every triangle whose plane the segment crosses inside the triangle, in double precision
-  const double slack = 1e-9 * (1.0 + length);
+  const double slack = kSegmentSlack * (1.0 + length);
   for (size_t t = 0; t < triangles_.size(); ++t) {
     double dist = 0.0;
     if (SegmentCrossesTriangle(origin, dir, length, vertices_[triangles_[t][0]], vertices_[triangles_[t][1]],

@@ -130,7 +130,7 @@ void NeighborBoxLocator::Prepare(int slave_body, int step, const std::vector<int
 void NeighborBoxLocator::TrianglesAlongSegment(int key, const Vec3& origin, const Vec3& dir, double length,
                                                std::vector<Candidate>* out) const {
   // the node's NaborSurf list, each surface tested exactly (segment-plane crossing, inside test)
-  const double slack = 1e-9 * (1.0 + length);
+  const double slack = kSegmentSlack * (1.0 + length);
   for (int t : lists_[prepared_body_][key].surfaces) {
     double dist = 0.0;
     if (SegmentCrossesTriangle(origin, dir, length, vertices_[triangles_[t][0]], vertices_[triangles_[t][1]],

@@ -7,6 +7,14 @@
 #include "dymesh/core/parallel.h"
 
 namespace dymesh {
+namespace {
+
+// a pushback direction this close to parallel with a face (cosine) does not leave through it
+constexpr double kMinFacing = 1e-9;
+// [m/s] relative speed below which the velocity search direction falls back to the local normal
+constexpr double kStillSpeed = 1e-9;
+
+}  // namespace
 
 void ContactDiagnostics::Add(const ContactDiagnostics& o) {
   candidates += o.candidates;
@@ -299,7 +307,7 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candida
   const Vec3& n = f.master->tri_normal[t];
   const Vec3 d = poly_normal ? n : ray_dir;
   // the node must lie behind the face: the pushback leaves the master through it
-  if (d.dot(n) <= 1e-9) return false;
+  if (d.dot(n) <= kMinFacing) return false;
   double depth = 0.0;
   if (!RayPlaneDistance(p, d, a, n, &depth)) return false;
   if (depth < -options_.search_backoff || depth > options_.toofar_maximum) return false;
@@ -327,7 +335,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>
   switch (options_.search_direction) {
     case SearchDirection::kVelocity:
       // along the line of relative motion, turned to point into the slave (also while separating)
-      if (v_rel.norm() > 1e-9) {
+      if (v_rel.norm() > kStillSpeed) {
         const Vec3 inward = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
         dir = v_rel.normalized();
         if (dir.dot(inward) < 0.0) dir = -dir;

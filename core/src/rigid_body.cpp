@@ -6,15 +6,20 @@
 #include "dymesh/core/units.h"
 
 namespace dymesh {
+namespace {
+
+constexpr double kGroundStaticDeflection = 0.001;  // [m] sag of the gravity model's ground support
+
+}  // namespace
 
 ExternalLoads MotionModelLoads(MotionModel motion, const BodyModel& model, const RigidState& s,
                                double rest_height) {
   ExternalLoads loads;
   if (motion != MotionModel::kGravityGround || model.mass <= 0.0) return loads;
   // weight (earth z down) against a ground support at the rest height: a stiff critically damped
-  // spring whose static deflection is 1 mm, so the car neither sinks nor bounces during the pulse
+  // spring, so the car neither sinks nor bounces during the pulse
   const double weight = model.mass * units::kStandardGravity;
-  const double stiffness = weight / 0.001;
+  const double stiffness = weight / kGroundStaticDeflection;
   const double damping = 2.0 * std::sqrt(stiffness * model.mass);
   const double support = weight + stiffness * (s.position.z() - rest_height) + damping * s.velocity.z();
   loads.force_earth = Vec3(0.0, 0.0, weight - std::max(support, 0.0));

@@ -49,10 +49,13 @@ TEST(Inline, MomentumDeltaVRestitutionAndEnergy) {
   EXPECT_NEAR(-dv1 / dv2, m2 / m1, 1e-9);
   // restitution: separation over closing speed; explicit steps of 0.1 ms add at most F dt / m ~ 0.03 m/s
   EXPECT_NEAR(s.separation_speed / s.closing_speed, e, 0.03 * e);
+  // closed-form delta-V of a central impact with restitution e; 1 % of v covers the restitution
+  // error above (3 % of e v = 0.06 m/s, under 0.5 % of v)
   EXPECT_NEAR(-dv1, (1 + e) * m2 / (m1 + m2) * v, 0.01 * v);
   // work of the node forces (crush energy) equals the kinetic energy lost, within 1 %
   EXPECT_NEAR(s.energy_balance_error, 0.0, 0.01);
-  // both bodies crushed; the softer-or-equal sharing splits it evenly for equal stiffness
+  // both bodies crushed; equal stiffness shares the crush evenly (spec §5); 10 % allows the two
+  // different grids (3.00 in against 3.14 x 3.33 in nodes) sampling the interface differently
   EXPECT_GT(s.bodies[0].max_crush, 0.0);
   EXPECT_GT(s.bodies[1].max_crush, 0.0);
   EXPECT_NEAR(s.bodies[0].max_dynamic_crush / s.bodies[1].max_dynamic_crush, 1.0, 0.1);

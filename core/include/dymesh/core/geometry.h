@@ -22,6 +22,9 @@ bool InsideTriangleCrossProduct(const Vec3& q, const Vec3& a, const Vec3& b, con
 /// returns false when the ray is (nearly) parallel to the plane.
 bool RayPlaneDistance(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& n, double* t);
 
+/// Relative widening of the exact segment test (round-off of the plane distance), per metre + 1.
+inline constexpr double kSegmentSlack = 1e-9;
+
 /// The exact candidate test of the locators: the segment origin + t dir, t in [-slack, length + slack],
 /// crosses the plane of triangle abc inside the triangle (cross-product test). Sets *t when true.
 bool SegmentCrossesTriangle(const Vec3& origin, const Vec3& dir, double length, const Vec3& a, const Vec3& b,
