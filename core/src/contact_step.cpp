@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "dymesh/core/crush_sharing.h"
 #include "dymesh/core/parallel.h"
 
 namespace dymesh {
@@ -14,7 +15,33 @@ constexpr double kMinFacing = 1e-9;
 // [m/s] relative speed below which the velocity search direction falls back to the local normal
 constexpr double kStillSpeed = 1e-9;
 
+// the master triangle's stiffness at a contact: its corners' average (spec §5 note, SlaveNodeForce)
+Stiffness CornerAverage(const BodyModel& model, const std::array<int, 3>& triangle) {
+  Stiffness k;
+  for (int corner : triangle) {
+    const Stiffness& c = model.VertexStiffness(corner);
+    k.A += c.A / 3.0;
+    k.B += c.B / 3.0;
+    k.C += c.C / 3.0;
+    k.D += c.D / 3.0;
+    k.sat_crush += c.sat_crush / 3.0;
+  }
+  return k;
+}
+
 }  // namespace
+
+void ContactEngine::Wrench::Add(const Vec3& force, const Vec3& arm_slave, const Vec3& arm_master) {
+  force_slave += force;
+  moment_slave += arm_slave.cross(force);
+  moment_master -= arm_master.cross(force);
+}
+
+void ContactEngine::Wrench::operator+=(const Wrench& o) {
+  force_slave += o.force_slave;
+  moment_slave += o.moment_slave;
+  moment_master += o.moment_master;
+}
 
 void ContactDiagnostics::Add(const ContactDiagnostics& o) {
   candidates += o.candidates;
@@ -51,12 +78,13 @@ struct ContactEngine::PassFrame {
   }
 };
 
-// a slave node matched to a master triangle (master frame)
+// a slave node matched to a master triangle (master frame): the search direction found the
+// triangle; the penetration, the pushback and the contact force are along its outward normal
 struct ContactEngine::Located {
   int triangle = -1;
-  double depth = 0.0;        // [m] signed distance to the surface along dir (> 0 inside the master)
-  Vec3 dir{0, 0, 0};         // pushback direction, unit, master frame
-  Vec3 point{0, 0, 0};       // [m] contact point on the master triangle, master frame
+  double ray_depth = 0.0;    // [m] distance to the surface along the search ray (selects the triangle)
+  double depth = 0.0;        // [m] penetration along the triangle's normal (> 0 inside the master)
+  Vec3 normal{0, 0, 0};      // master's outward normal of the triangle, unit, master frame
   Vec3 rel_velocity{0, 0, 0};  // [m/s] slave node relative to master, master frame
 };
 
@@ -123,8 +151,8 @@ bool ContactEngine::BoundsOverlap(int a, int b) const {
 
 StepResult ContactEngine::Step(double dt) {
   FloatModeScope float_mode;
+  AccountWork();  // a step the host did not book itself
   const int n = body_count();
-  std::vector<Vec3> force_earth(n, Vec3::Zero()), moment_earth(n, Vec3::Zero());
   StepResult result;
   // every pair whose bounds overlap, in index order (determinism: fixed pair order)
   for (int a = 0; a < n; ++a) {
@@ -142,24 +170,65 @@ StepResult ContactEngine::Step(double dt) {
         if (models_[a]->rigid) master = a;
         if (models_[b]->rigid) master = b;
         const int slave = master == a ? b : a;
-        // spec §5: the first pass shares the penetration by theta; the later passes find the
-        // master's remainder on the other side and restore it in full
+        // spec §5: the first pass splits each penetration so the two law pressures are equal; the
+        // later passes find the master's share on the other side and restore it in full, so every
+        // overlap is absorbed once
         const bool share = pass == 0;
         sums[pass] = RunPass(master, slave, share, &touching[slave == a ? 0 : 1], dt, &result.diagnostics);
       }
-      AddPairLoads(sums, &force_earth, &moment_earth);
+      result.pairs.push_back(CombinePasses(a, b, sums));
     }
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
+  std::vector<Vec3> force_earth(n, Vec3::Zero()), moment_earth(n, Vec3::Zero());
+  for (const PairLoads& p : result.pairs) {
+    for (int k = 0; k < 2; ++k) {
+      force_earth[p.body[k]] += p.normal_force[k] + p.friction_force[k];
+      moment_earth[p.body[k]] += p.normal_moment[k] + p.friction_moment[k];
+    }
+  }
   result.loads.resize(n);
+  step_start_.resize(n);
   for (int i = 0; i < n; ++i) {
     const Mat3 rt = states_[i].rigid.Rotation().transpose();
     result.loads[i].force_earth = force_earth[i];
     result.loads[i].force_body = rt * force_earth[i];
     result.loads[i].moment_body = rt * moment_earth[i];
+    step_start_[i] = states_[i].rigid;
   }
+  // the ledger books these loads once the host has moved the bodies
+  unbooked_ = result.pairs;
+  unbooked_dt_ = dt;
   ++step_index_;
   return result;
+}
+
+void ContactEngine::AccountWork() {
+  for (const PairLoads& p : unbooked_) {
+    // work taken out of the rigid motion by the normal and the friction loads: power at the mean
+    // velocities (the moment acted in the body axes of the step start)
+    double normal = 0.0, friction = 0.0;  // [J]
+    for (int k = 0; k < 2; ++k) {
+      const RigidState& before = step_start_[p.body[k]];
+      const RigidState& after = states_[p.body[k]].rigid;
+      const Vec3 v = 0.5 * (before.velocity + after.velocity);
+      const Vec3 w = before.Rotation() * (0.5 * (before.omega + after.omega));
+      normal -= (p.normal_force[k].dot(v) + p.normal_moment[k].dot(w)) * unbooked_dt_;
+      friction -= (p.friction_force[k].dot(v) + p.friction_moment[k].dot(w)) * unbooked_dt_;
+    }
+    // each side's share: a rigid side takes none; two deformable sides share the crush work as their
+    // node laws did over the step, and the friction work evenly (heat at the common interface)
+    const bool rigid0 = models_[p.body[0]]->rigid, rigid1 = models_[p.body[1]]->rigid;
+    const double e0 = p.law_energy[0], e1 = p.law_energy[1];
+    double crush0 = rigid0 ? 0.0 : rigid1 ? 1.0 : 0.5;
+    if (!rigid0 && !rigid1 && e0 * e1 >= 0.0 && e0 + e1 != 0.0) crush0 = e0 / (e0 + e1);
+    const double friction0 = rigid0 ? 0.0 : rigid1 ? 1.0 : 0.5;
+    states_[p.body[0]].crush_energy += crush0 * normal;
+    states_[p.body[1]].crush_energy += (1.0 - crush0) * normal;
+    states_[p.body[0]].friction_energy += friction0 * friction;
+    states_[p.body[1]].friction_energy += (1.0 - friction0) * friction;
+  }
+  unbooked_.clear();
 }
 
 std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, int slave_index,
@@ -198,31 +267,30 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   if (found) ++out->diag.located;
   if (!found && !was_touching) return;
   const Vec3 old_position = f.slave->vertices[v];
-  Vec3 dir_slave;
   const double node_force =
-      RestoreNode(f, v, found ? &hit : nullptr, was_touching, dt, &out->diag, &out->crush_energy, &dir_slave);
+      RestoreNode(f, v, found ? &hit : nullptr, was_touching, dt, &out->diag, &out->sums.law_energy);
   if (f.slave->vertices[v] != old_position) out->moved.push_back(v);
   if (node_force <= 0.0) return;
   out->touching.push_back(v);
   ++out->diag.touching;
 
-  // node force on the slave along its pushback direction, friction against the sliding on the
-  // master surface (spec §7)
-  const Vec3 dir_earth = f.r_master * hit.dir;
-  const Vec3 normal_earth = f.r_master * f.master->tri_normal[hit.triangle];
-  Vec3 force = node_force * dir_earth;
+  // both bodies are loaded at the same point, the slave node where it now is (momentum and angular
+  // momentum conserved to round-off)
+  const Vec3 arm_slave = f.r_slave * f.slave->vertices[v];
+  const Vec3 arm_master = f.r_master * f.ToMaster(f.slave->vertices[v]);
+  // determinism: within a chunk, sums run in ascending node order
+  out->sums.touching_area += f.slave->node_area[v];
+  // normal force along the master surface normal: without friction there is no tangential force
+  const Vec3 normal_earth = f.r_master * hit.normal;
+  out->sums.normal.Add(node_force * normal_earth, arm_slave, arm_master);
+  // spec §7 SlaveNodeFriction: against the sliding on the master surface, mu times the normal force,
+  // none inside the friction null band
   const Vec3 v_rel = f.r_master * hit.rel_velocity;
   const Vec3 v_slide = v_rel - v_rel.dot(normal_earth) * normal_earth;
   const double slide = v_slide.norm();
   if (f.mu > 0.0 && slide > options_.friction_null_band) {
-    force -= (f.mu * node_force / slide) * v_slide;
-    out->sums.friction_energy += f.mu * node_force * slide * dt;
+    out->sums.friction.Add(-(f.mu * node_force / slide) * v_slide, arm_slave, arm_master);
   }
-  // determinism: within a chunk, sums run in ascending node order
-  out->sums.touching_area += f.slave->node_area[v];
-  out->sums.force_slave += force;
-  out->sums.moment_slave += (f.r_slave * f.slave->vertices[v]).cross(force);
-  out->sums.moment_master -= (f.r_master * hit.point).cross(force);
 }
 
 ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>* touching,
@@ -259,17 +327,16 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
   std::vector<int> now_touching, moved;
   for (std::size_t c = 0; c < ChunkCount(candidates.size()); ++c) {
     const ChunkSums& part = chunks_[c];
-    sums.force_slave += part.sums.force_slave;
-    sums.moment_slave += part.sums.moment_slave;
-    sums.moment_master += part.sums.moment_master;
+    sums.normal += part.sums.normal;
+    sums.friction += part.sums.friction;
     sums.touching_area += part.sums.touching_area;
-    sums.friction_energy += part.sums.friction_energy;
-    f.slave->crush_energy += part.crush_energy;
+    sums.law_energy += part.sums.law_energy;
     diag->Add(part.diag);
     now_touching.insert(now_touching.end(), part.touching.begin(), part.touching.end());
     moved.insert(moved.end(), part.moved.begin(), part.moved.end());
   }
   *touching = std::move(now_touching);
+  f.slave->law_energy += sums.law_energy;
 
   // crushed nodes change the slave's triangles, bounds and search structure (refit)
   if (!moved.empty()) {
@@ -280,25 +347,34 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
   return sums;
 }
 
-void ContactEngine::AddPairLoads(const std::vector<PassSums>& sums, std::vector<Vec3>* force_earth,
-                                 std::vector<Vec3>* moment_earth) {
-  // each pass estimates the whole interface force from its slave's nodes; estimates are weighted by
+PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>& sums) const {
+  PairLoads out;
+  out.body[0] = a;
+  out.body[1] = b;
+  // each pass estimates the whole interface load from its slave's nodes; estimates are weighted by
   // the contact area the slave saw, so a side whose mesh cannot resolve the contact counts less
   double area = 0.0;
   for (const PassSums& p : sums) area += p.touching_area;
-  if (area <= 0.0) return;
   for (const PassSums& p : sums) {
+    const int ks = p.slave == a ? 0 : 1, km = 1 - ks;
+    out.law_energy[ks] += p.law_energy;
+    if (area <= 0.0) continue;
     const double w = p.touching_area / area;
-    (*force_earth)[p.slave] += w * p.force_slave;
-    (*moment_earth)[p.slave] += w * p.moment_slave;
-    (*force_earth)[p.master] -= w * p.force_slave;
-    (*moment_earth)[p.master] += w * p.moment_master;
-    states_[p.slave].friction_energy += w * p.friction_energy;
+    out.normal_force[ks] += w * p.normal.force_slave;
+    out.normal_moment[ks] += w * p.normal.moment_slave;
+    out.normal_force[km] -= w * p.normal.force_slave;
+    out.normal_moment[km] += w * p.normal.moment_master;
+    out.friction_force[ks] += w * p.friction.force_slave;
+    out.friction_moment[ks] += w * p.friction.moment_slave;
+    out.friction_force[km] -= w * p.friction.force_slave;
+    out.friction_moment[km] += w * p.friction.moment_master;
   }
+  return out;
 }
 
 bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p,
-                                    const Vec3& ray_dir, bool poly_normal, const Located* best, Located* out) const {
+                                    const Vec3& ray_dir, const Vec3& inward, bool poly_normal, const Located* best,
+                                    Located* out) const {
   const int t = candidate.triangle;
   const auto& tri = f.master_model->mesh.triangles[t];
   const Vec3& a = f.master->vertices[tri[0]];
@@ -308,18 +384,20 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candida
   const Vec3 d = poly_normal ? n : ray_dir;
   // the node must lie behind the face: the pushback leaves the master through it
   if (d.dot(n) <= kMinFacing) return false;
+  // the two surfaces face each other: the master's outward normal points into the slave
+  if (n.dot(inward) <= kMinFacing) return false;
   double depth = 0.0;
   if (!RayPlaneDistance(p, d, a, n, &depth)) return false;
   if (depth < -options_.search_backoff || depth > options_.toofar_maximum) return false;
   // spec §2 inside test (InsidePolygonTest_CrossProd), unless the locator proved it with margin
   const Vec3 q = p + depth * d;
   if (!(candidate.inside && !poly_normal) && !InsideTriangleCrossProduct(q, a, b, c, n)) return false;
-  // best = smallest |depth|; ties keep the earlier (lower-index) triangle
-  if (best == nullptr || std::abs(depth) < std::abs(best->depth)) {
+  // best = smallest |depth| along the ray; ties keep the earlier (lower-index) triangle
+  if (best == nullptr || std::abs(depth) < std::abs(best->ray_depth)) {
     out->triangle = t;
-    out->depth = depth;
-    out->dir = d;
-    out->point = q;
+    out->ray_depth = depth;
+    out->depth = (a - p).dot(n);
+    out->normal = n;
   }
   return true;
 }
@@ -331,19 +409,19 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>
   const double backoff = options_.search_backoff, reach = options_.toofar_maximum;
 
   // search direction (spec §2): the pushback direction, pointing out of the master into the slave
+  const Vec3 inward = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
   Vec3 dir = Vec3::Zero();
   switch (options_.search_direction) {
     case SearchDirection::kVelocity:
       // along the line of relative motion, turned to point into the slave (also while separating)
       if (v_rel.norm() > kStillSpeed) {
-        const Vec3 inward = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
         dir = v_rel.normalized();
         if (dir.dot(inward) < 0.0) dir = -dir;
         break;
       }
       [[fallthrough]];  // no relative motion: fall back to the local normal
     case SearchDirection::kLocalAverageNormal:
-      dir = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
+      dir = inward;
       break;
     case SearchDirection::kSpecified:
       dir = f.r_slave_to_master * options_.specified_direction.normalized();
@@ -377,14 +455,14 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>
                      : options_.stop_rule == StopRule::kBestOfTwo ? 2 : INT32_MAX;
   int accepted = 0;
   for (const Candidate& c : *tris) {
-    if (ExamineTriangle(f, c, p, dir, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
+    if (ExamineTriangle(f, c, p, dir, inward, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
   }
   out->rel_velocity = v_rel;
   return accepted > 0;
 }
 
 double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
-                                  ContactDiagnostics* diag, double* crush_energy, Vec3* dir_slave) const {
+                                  ContactDiagnostics* diag, double* law_energy) const {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
   const Stiffness& k = m.VertexStiffness(v);
@@ -399,25 +477,24 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   const double deflection = s.delta[v].norm();
   Vec3 delta = s.delta[v];
   bool touching = false;
-  *dir_slave = hit ? Vec3(f.r_slave_to_master.transpose() * hit->dir) : Vec3::Zero();
+  // the master's outward normal in the slave frame: the node is pushed out of the master along it,
+  // the way a frictionless surface pushes (no sideways drag whatever the search direction)
+  const Vec3 normal_slave = hit ? Vec3(f.r_slave_to_master.transpose() * hit->normal) : Vec3::Zero();
 
   if (hit && hit->depth >= -options_.contact_tolerance) {
-    // spec §5: the slave takes theta of the penetration (a rigid master takes none); the master
-    // triangle's stiffness and deflection are its corners' averages, and each side's force is taken
-    // at its own total deflection so that a side already crushed further takes less (forces equalise)
+    // spec §5: two deformable sides split the penetration so their law pressures are equal (theta
+    // is the first estimate); the master triangle's stiffness and deflection are its corners'
+    // averages; a rigid master takes none, and a later pass restores the master's share in full
     const double depth = std::max(hit->depth, 0.0);
-    double theta = 1.0;
+    double push = depth;
     if (!f.master_model->rigid && f.share) {
       const auto& tri = f.master_model->mesh.triangles[hit->triangle];
-      double a_m = 0.0, b_m = 0.0, deflection_m = 0.0;
-      for (int corner : tri) {
-        a_m += f.master_model->VertexStiffness(corner).A / 3.0;
-        b_m += f.master_model->VertexStiffness(corner).B / 3.0;
-        deflection_m += f.master->delta[corner].norm() / 3.0;
-      }
-      theta = CrushShare(a_m + b_m * deflection_m, b_m, k.A + k.B * deflection, k.B, depth);
+      const Stiffness k_m = CornerAverage(*f.master_model, tri);
+      double deflection_m = 0.0;
+      for (int corner : tri) deflection_m += f.master->delta[corner].norm() / 3.0;
+      const double theta = CrushShare(k_m.A + k_m.B * deflection_m, k_m.B, k.A + k.B * deflection, k.B, depth);
+      push = EqualPressureShare(k, deflection, k_m, deflection_m, depth, theta, options_.null_band);
     }
-    double push = theta * depth;
     // spec §2 PushbackReduction (version 4 only): withhold a fraction, at most PUSHBACK_REDUCE_LIMIT
     if (options_.version == 4 && push > 0.0) {
       push -= std::min(push * options_.pushback_reduction, options_.pushback_reduce_limit);
@@ -442,7 +519,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
         ++diag->growth_limited;
       }
     }
-    delta += push * *dir_slave;
+    delta += push * normal_slave;
     touching = true;
   } else if (can_spring && deflection > 0.0) {
     // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max
@@ -465,12 +542,12 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   // spec §6: DeltaMaxTotal, the unloading state machine and the node law
   s.delta_max[v] = std::max(s.delta_max[v], new_deflection);
   s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
-  const double area = touching ? ProjectedNodeArea(m, s, v, *dir_slave) : s.node_area[v];
+  const double area = touching ? ProjectedNodeArea(m, s, v, normal_slave) : s.node_area[v];
   const double force =
       touching ? area * NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_) : 0.0;
 
   // work of the node law over the deflection change, then commit the new position
-  *crush_energy += area * NodeLawWork(s.unload[v], k, deflection, new_deflection, s.delta_max[v], e, options_);
+  *law_energy += area * NodeLawWork(s.unload[v], k, deflection, new_deflection, s.delta_max[v], e, options_);
   s.node_force[v] = force;
   s.node_area[v] = area;
   s.delta[v] = delta;

@@ -90,12 +90,4 @@ double NodeLawWork(UnloadState state, const Stiffness& k, double from, double to
   return (to - from) / 6.0 * (pressure(from) + 4.0 * pressure(0.5 * (from + to)) + pressure(to));
 }
 
-double CrushShare(double a_master, double b_master, double a_slave, double b_slave, double delta_total) {
-  // spec §5 Eq. 4-6: theta = F_master / (F_master + F_slave) at the full penetration
-  const double f_master = a_master + b_master * delta_total;
-  const double f_slave = a_slave + b_slave * delta_total;
-  const double sum = f_master + f_slave;
-  return sum > 0.0 ? f_master / sum : 0.5;
-}
-
 }  // namespace dymesh

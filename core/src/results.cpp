@@ -77,6 +77,7 @@ BodySummary SummarizeBody(const Simulation& sim, int i) {
     b.max_dynamic_crush = std::max(b.max_dynamic_crush, state.delta_max[v]);
   }
   b.crush_energy = state.crush_energy;
+  b.law_energy = state.law_energy;
   b.friction_energy = state.friction_energy;
   b.final_velocity = state.rigid.velocity;
   b.final_yaw_rate = state.rigid.omega.z();
@@ -103,7 +104,9 @@ Summary Summarize(const Simulation& sim) {
   for (const BodySummary& b : sum.bodies) {
     sum.crush_energy += b.crush_energy;
     sum.friction_energy += b.friction_energy;
+    sum.law_energy += b.law_energy;
   }
+  sum.energy_discontinuity = sum.crush_energy - sum.law_energy;
   const double lost = sum.kinetic_before - sum.kinetic_after;
   sum.energy_balance_error = lost != 0.0 ? (lost - sum.crush_energy - sum.friction_energy) / lost : 0.0;
   // closing and separation speed of the first pair along the impulse on body 0
@@ -148,6 +151,7 @@ nlohmann::json SummaryToJson(const Summary& s, UnitSystem system) {
         {"max_dynamic_crush", b.max_dynamic_crush * u.length},
         {"crush_energy", b.crush_energy * u.energy},
         {"friction_energy", b.friction_energy * u.energy},
+        {"law_energy", b.law_energy * u.energy},
         {"final_velocity_earth", Vector(b.final_velocity, u.speed)},
         {"final_yaw_rate_deg_s", b.final_yaw_rate * kRadToDeg},
         {"crush_profile", CrushProfileJson(b.crush_profile, u.length)},
@@ -163,6 +167,8 @@ nlohmann::json SummaryToJson(const Summary& s, UnitSystem system) {
       {"kinetic_energy_after", s.kinetic_after * u.energy},
       {"crush_energy", s.crush_energy * u.energy},
       {"friction_energy", s.friction_energy * u.energy},
+      {"law_energy", s.law_energy * u.energy},
+      {"energy_discontinuity", s.energy_discontinuity * u.energy},
       {"energy_balance_error", s.energy_balance_error},
       {"closing_speed", s.closing_speed * u.speed},
       {"separation_speed", s.separation_speed * u.speed},

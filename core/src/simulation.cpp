@@ -70,6 +70,8 @@ bool Simulation::Advance() {
     engine_->SetRigidState(i, rigid);
     in_contact = in_contact || loads.force_earth.squaredNorm() > 0.0;
   }
+  // the energy ledger books the step's contact work on the motion just integrated
+  engine_->AccountWork();
   diagnostics_.Add(step.diagnostics);
   ++steps_;
   time_ = steps_ * dt;
@@ -97,6 +99,7 @@ void Simulation::Record(const StepResult* step) {
       const double mass = engine_->model(i).mass;
       if (mass > 0.0) b.accel_body = b.loads.force_body / mass;
     }
+    b.law_energy = s.law_energy;
     b.crush_energy = s.crush_energy;
     b.friction_energy = s.friction_energy;
     sample.bodies.push_back(b);

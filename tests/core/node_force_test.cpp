@@ -115,16 +115,5 @@ TEST(UnloadStateMachine, FullCycle) {
   EXPECT_EQ(NextUnloadState(UnloadState::kNowUnloading, false, 0.9, 1.0, e, o), UnloadState::kFinishedUnloading);
 }
 
-TEST(CrushShare, Theta) {
-  // spec §5: equal bodies split evenly; the softer slave takes the larger share
-  EXPECT_DOUBLE_EQ(CrushShare(10, 3, 10, 3, 2.0), 0.5);
-  const double theta = CrushShare(10, 3, 5, 1, 2.0);  // F_m = 16, F_s = 7
-  EXPECT_DOUBLE_EQ(theta, 16.0 / 23.0);
-  EXPECT_GT(theta, 0.5);
-  // Newton's third law at the shared crush for linear laws: F_s(theta d) == F_m((1-theta) d) when A = 0
-  const double d = 3.0, t = CrushShare(0, 6, 0, 2, d);
-  EXPECT_DOUBLE_EQ(2 * t * d, 6 * (1 - t) * d);
-}
-
 }  // namespace
 }  // namespace dymesh

@@ -58,8 +58,9 @@ struct BodyState {
   std::vector<double> tri_area;      ///< [m^2] current area (n_triangles)
   std::vector<double> tri_area_orig; ///< [m^2] undamaged area (n_triangles)
   std::vector<int> touching;         ///< vertices in contact at their last update, ascending
-  double crush_energy = 0.0;         ///< [J] work done on the nodes (integral F d delta)
-  double friction_energy = 0.0;      ///< [J] energy dissipated by contact friction at this body's slave nodes
+  double law_energy = 0.0;           ///< [J] work of the node law on this body's nodes (integral g A d delta)
+  double crush_energy = 0.0;         ///< [J] ledger: this body's share of the normal contact work
+  double friction_energy = 0.0;      ///< [J] ledger: this body's share of the friction work
 };
 
 /// Fresh state at rest pose: undamaged vertices, triangle normals and areas.

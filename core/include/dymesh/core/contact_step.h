@@ -33,9 +33,21 @@ struct ContactDiagnostics {
   void Add(const ContactDiagnostics& o);
 };
 
+/// Contact loads one pair put on its two bodies over a step, split into the normal (crush) part and
+/// the friction part; both act at the same points on both bodies (equal and opposite).
+struct PairLoads {
+  int body[2] = {0, 0};
+  Vec3 normal_force[2] = {Vec3::Zero(), Vec3::Zero()};     ///< [N] earth frame, on body[k]
+  Vec3 normal_moment[2] = {Vec3::Zero(), Vec3::Zero()};    ///< [N m] about body[k]'s CG, earth frame
+  Vec3 friction_force[2] = {Vec3::Zero(), Vec3::Zero()};   ///< [N] earth frame
+  Vec3 friction_moment[2] = {Vec3::Zero(), Vec3::Zero()};  ///< [N m] earth frame
+  double law_energy[2] = {0.0, 0.0};  ///< [J] node-law work on body[k]'s nodes over the step
+};
+
 /// What one contact step produced.
 struct StepResult {
   std::vector<CgLoads> loads;      ///< per body
+  std::vector<PairLoads> pairs;    ///< per pair in contact, in pair order
   ContactDiagnostics diagnostics;
 };
 
@@ -53,6 +65,12 @@ class ContactEngine {
   /// Host input: pose and velocities of body i for the coming step.
   void SetRigidState(int i, const RigidState& rigid) { states_[i].rigid = rigid; }
 
+  /// Energy ledger (LS-DYNA-style contact energy): books the work that the last step's contact loads
+  /// did on the motion the host integrated, at the mean of the velocities before and after the step
+  /// (exact for the semi-implicit Euler host), into each body's crush and friction energy. Call once
+  /// the host has set the states reached at the end of the step; Step() books a pending step itself.
+  void AccountWork();
+
   /// One collision time step of length dt [s] at the current poses: updates crush and returns the
   /// collision loads at each CG. Call from one thread at a time (one engine per run).
   /// Threading: each pass's slave nodes run on oneTBB in fixed chunks of 256.
@@ -62,26 +80,31 @@ class ContactEngine {
  private:
   struct PassFrame;
   struct Located;
-  // one pass's sums: the slave's node forces (earth frame) and moments about each CG
-  struct PassSums {
-    int master = 0, slave = 0;
-    Vec3 force_slave{0, 0, 0};    // [N] on the slave (the master takes the opposite)
+  // forces on the slave (earth frame; the master takes the opposite at the same points) and their
+  // moments about each CG
+  struct Wrench {
+    Vec3 force_slave{0, 0, 0};    // [N]
     Vec3 moment_slave{0, 0, 0};   // [N m] about the slave's CG
     Vec3 moment_master{0, 0, 0};  // [N m] about the master's CG
+    void Add(const Vec3& force, const Vec3& arm_slave, const Vec3& arm_master);
+    void operator+=(const Wrench& o);
+  };
+  // one pass's sums: normal and friction loads of its slave's nodes
+  struct PassSums {
+    int master = 0, slave = 0;
+    Wrench normal, friction;
     double touching_area = 0.0;   // [m^2] of slave nodes carrying force
-    double friction_energy = 0.0; // [J] dissipated by friction over the step
+    double law_energy = 0.0;      // [J] node-law work on the slave's nodes
   };
   // what one chunk of slave nodes produced (folded in chunk order); buffers reused across passes
   struct ChunkSums {
     PassSums sums;
     ContactDiagnostics diag;
-    double crush_energy = 0.0;            // [J] node-law work on the slave's nodes
     std::vector<int> touching, moved;     // ascending node indices
     std::vector<Candidate> scratch;       // candidate triangles of one node
     void Clear() {
       sums = PassSums{};
       diag = ContactDiagnostics{};
-      crush_energy = 0.0;
       touching.clear();
       moved.clear();
     }
@@ -90,13 +113,12 @@ class ContactEngine {
                    ContactDiagnostics* diag);
   std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const std::vector<int>& touching);
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const;
-  void AddPairLoads(const std::vector<PassSums>& sums, std::vector<Vec3>* force_earth,
-                    std::vector<Vec3>* moment_earth);
+  PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
   bool LocateNode(const PassFrame& f, int v, std::vector<Candidate>* scratch, Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
-                       bool poly_normal, const Located* best, Located* out) const;
+                       const Vec3& inward, bool poly_normal, const Located* best, Located* out) const;
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
-                     ContactDiagnostics* diag, double* crush_energy, Vec3* pushback_dir_slave) const;
+                     ContactDiagnostics* diag, double* law_energy) const;
   bool BoundsOverlap(int a, int b) const;
   void InitBounds(int body);
   void GrowBounds(int body, const std::vector<int>& moved);
@@ -111,6 +133,10 @@ class ContactEngine {
   std::vector<std::vector<char>> touching_mark_;  // per body: 1 for nodes touching the current master  // per pair (a<b): nodes of a, of b touching the other
   ContactOptions options_;
   int step_index_ = 0;
+  // the last step's pair loads and the states they were applied at, until AccountWork books them
+  std::vector<PairLoads> unbooked_;
+  std::vector<RigidState> step_start_;
+  double unbooked_dt_ = 0.0;
 };
 
 }  // namespace dymesh

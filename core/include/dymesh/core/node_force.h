@@ -38,9 +38,4 @@ double NodePressure(UnloadState state, bool touching, const Stiffness& k, double
 double NodeLawWork(UnloadState state, const Stiffness& k, double from, double to, double delta_max,
                    double restitution, const ContactOptions& options);
 
-/// Crush-sharing fraction theta (spec §5, Eq. 4-6): the slave's share of the penetration.
-/// `a_master`, `b_master` are the master triangle's corner averages; a rigid master gives 1.
-double CrushShare(double a_master, double b_master, double a_slave, double b_slave,
-                  double delta_total);
-
 }  // namespace dymesh

@@ -35,8 +35,9 @@ struct BodySummary {
   int max_crush_vertex = -1;
   Vec3 max_crush_location{0, 0, 0};  ///< [m] body frame (undamaged position)
   double max_dynamic_crush = 0.0;    ///< [m] largest DeltaMaxTotal
-  double crush_energy = 0.0;     ///< [J]
-  double friction_energy = 0.0;  ///< [J]
+  double crush_energy = 0.0;     ///< [J] ledger: share of the normal contact work
+  double friction_energy = 0.0;  ///< [J] ledger: share of the friction work
+  double law_energy = 0.0;       ///< [J] work of the node law on this body's nodes
   Vec3 final_velocity{0, 0, 0};  ///< [m/s] earth frame
   double final_yaw_rate = 0.0;   ///< [rad/s]
   CrushProfile crush_profile;    ///< CRASH3-style C1..C6 on the damaged face
@@ -47,7 +48,9 @@ struct Summary {
   std::vector<BodySummary> bodies;
   Vec3 momentum_before{0, 0, 0}, momentum_after{0, 0, 0};  ///< [kg m/s]
   double kinetic_before = 0.0, kinetic_after = 0.0;         ///< [J]
-  double crush_energy = 0.0, friction_energy = 0.0;         ///< [J]
+  double crush_energy = 0.0, friction_energy = 0.0;         ///< [J] ledger (work of the applied loads)
+  double law_energy = 0.0;            ///< [J] node-law work, all bodies
+  double energy_discontinuity = 0.0;  ///< [J] ledger crush work - node-law work
   double energy_balance_error = 0.0;  ///< (KE lost - crush - friction) / KE lost
   double closing_speed = 0.0;         ///< [m/s] along the impulse direction (first pair)
   double separation_speed = 0.0;      ///< [m/s] along the impulse direction (first pair)

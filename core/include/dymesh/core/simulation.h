@@ -14,8 +14,9 @@ struct BodySample {
   RigidState rigid;
   CgLoads loads;              ///< collision loads over the step that ended here
   Vec3 accel_body{0, 0, 0};   ///< [m/s^2] CG acceleration from collision loads, body frame
-  double crush_energy = 0.0;  ///< [J] cumulative
-  double friction_energy = 0.0; ///< [J] cumulative
+  double law_energy = 0.0;      ///< [J] cumulative node-law work on the nodes
+  double crush_energy = 0.0;    ///< [J] cumulative ledger crush (normal contact) work
+  double friction_energy = 0.0; ///< [J] cumulative ledger friction work
 };
 
 /// One recorded instant.

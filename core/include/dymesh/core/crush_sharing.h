@@ -1,0 +1,22 @@
+#pragma once
+#include "dymesh/core/stiffness.h"
+
+/// Crush sharing between two deformable bodies (spec §5): how one penetration increment is split so
+/// that the forces on the two sides are equal and opposite.
+namespace dymesh {
+
+/// Crush-sharing fraction theta (spec §5, Eq. 4-6): the slave's share of the penetration, from the
+/// forces each side would carry at the full penetration. A one-shot estimate: exact only when both
+/// laws are linear through the origin. `a_master`, `b_master` are the master triangle's corner averages.
+double CrushShare(double a_master, double b_master, double a_slave, double b_slave, double delta_total);
+
+/// The slave's share x in [0, depth] of a penetration `depth` [m] that makes the two law pressures
+/// equal (spec §5's purpose; SMAC's equal-pressure rule; two crushable layers in series):
+///   g_slave(slave_deflection + x) = g_master(master_deflection + depth - x).
+/// The pressures are the loading laws of spec §3 (Eq. 1, 2). When one side is already stiffer than
+/// the other can become, that side takes none. Where both laws are flat (null band, saturation) every
+/// split equalises them, and the one nearest theta (Eq. 7, `theta` * depth) is taken.
+double EqualPressureShare(const Stiffness& slave, double slave_deflection, const Stiffness& master,
+                          double master_deflection, double depth, double theta, double null_band);
+
+}  // namespace dymesh

@@ -1,0 +1,67 @@
+#include "dymesh/core/crush_sharing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dymesh/core/node_force.h"
+
+namespace dymesh {
+namespace {
+
+// bisection/Newton iterations of the equal-pressure split; each at least halves the bracket
+constexpr int kMaxShareIterations = 60;
+// relative bracket width at which the split is converged (round-off of the deflection sums)
+constexpr double kShareTolerance = 1e-12;
+
+// slope dg/d(delta) of the loading law (spec §3): zero in the null band and beyond saturation
+double LoadingSlope(const Stiffness& k, double delta, double null_band) {
+  if (delta <= null_band || (k.sat_crush > 0.0 && delta >= k.sat_crush)) return 0.0;
+  const double x = delta - null_band;
+  return k.B + x * (2.0 * k.C + 3.0 * x * k.D);
+}
+
+}  // namespace
+
+double CrushShare(double a_master, double b_master, double a_slave, double b_slave, double delta_total) {
+  // spec §5 Eq. 4-6: theta = F_master / (F_master + F_slave) at the full penetration
+  const double f_master = a_master + b_master * delta_total;
+  const double f_slave = a_slave + b_slave * delta_total;
+  const double sum = f_master + f_slave;
+  return sum > 0.0 ? f_master / sum : 0.5;
+}
+
+double EqualPressureShare(const Stiffness& slave, double slave_deflection, const Stiffness& master,
+                          double master_deflection, double depth, double theta, double null_band) {
+  if (!(depth > 0.0)) return 0.0;
+  // pressure mismatch h(x) = g_slave - g_master; it never decreases in x (both laws non-decreasing)
+  auto mismatch = [&](double x) {
+    return LoadingPressure(slave, slave_deflection + x, null_band) -
+           LoadingPressure(master, master_deflection + depth - x, null_band);
+  };
+  auto slope = [&](double x) {
+    return LoadingSlope(slave, slave_deflection + x, null_band) +
+           LoadingSlope(master, master_deflection + depth - x, null_band);
+  };
+  // one side already at least as stiff as the other can become: the other takes it all
+  const double at_zero = mismatch(0.0), at_full = mismatch(depth);
+  if (at_zero >= 0.0 && at_full > 0.0) return 0.0;
+  if (at_full <= 0.0 && at_zero < 0.0) return depth;
+  // theta's split is the first estimate; bracket the root on its side
+  double x = std::clamp(theta, 0.0, 1.0) * depth;
+  double h = mismatch(x);
+  if (h == 0.0) return x;  // flat laws (null band, saturation): every split is equal, keep theta's
+  double lo = h < 0.0 ? x : 0.0, hi = h < 0.0 ? depth : x;
+  for (int i = 0; i < kMaxShareIterations && hi - lo > kShareTolerance * depth; ++i) {
+    // Newton step inside the bracket (one step for linear laws), bisection when it would leave it
+    const double s = slope(x);
+    double next = s > 0.0 ? x - h / s : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    x = next;
+    h = mismatch(x);
+    if (h == 0.0) return x;
+    (h < 0.0 ? lo : hi) = x;
+  }
+  return x;
+}
+
+}  // namespace dymesh

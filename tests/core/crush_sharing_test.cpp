@@ -1,0 +1,94 @@
+#include "dymesh/core/crush_sharing.h"
+
+#include <gtest/gtest.h>
+
+#include "dymesh/core/node_force.h"
+
+namespace dymesh {
+namespace {
+
+// plain numbers (unit-free); null band 0.5 as in the spec's inches
+constexpr double kNullBand = 0.5;
+
+Stiffness Law(double a, double b, double c = 0.0, double d = 0.0) {
+  Stiffness k;
+  k.A = a;
+  k.B = b;
+  k.C = c;
+  k.D = d;
+  return k;
+}
+
+// the pressures on the two sides after the split
+double SlavePressure(const Stiffness& k, double deflection, double x) { return LoadingPressure(k, deflection + x, kNullBand); }
+double MasterPressure(const Stiffness& k, double deflection, double depth, double x) {
+  return LoadingPressure(k, deflection + depth - x, kNullBand);
+}
+
+TEST(CrushShare, Theta) {
+  // spec §5: equal bodies split evenly; the softer slave takes the larger share
+  EXPECT_DOUBLE_EQ(CrushShare(10, 3, 10, 3, 2.0), 0.5);
+  const double theta = CrushShare(10, 3, 5, 1, 2.0);  // F_m = 16, F_s = 7
+  EXPECT_DOUBLE_EQ(theta, 16.0 / 23.0);
+  EXPECT_GT(theta, 0.5);
+  // Newton's third law at the shared crush for linear laws: F_s(theta d) == F_m((1-theta) d) when A = 0
+  const double d = 3.0, t = CrushShare(0, 6, 0, 2, d);
+  EXPECT_DOUBLE_EQ(2 * t * d, 6 * (1 - t) * d);
+}
+
+TEST(EqualPressureShare, LinearLawsInSeries) {
+  // closed form for A + B (delta - d0) on both sides, both past the null band:
+  //   A_s + B_s (ds + x - d0) = A_m + B_m (dm + depth - x - d0)
+  //   x = (A_m - A_s + B_m (dm + depth - d0) - B_s (ds - d0)) / (B_s + B_m)
+  const Stiffness s = Law(300, 100), m = Law(300, 200);
+  const double ds = 4.0, dm = 2.0, depth = 0.3;
+  const double expected = (0.0 + 200 * (dm + depth - kNullBand) - 100 * (ds - kNullBand)) / 300.0;
+  const double x = EqualPressureShare(s, ds, m, dm, depth, 0.5, kNullBand);
+  EXPECT_NEAR(x, expected, 1e-12);
+  EXPECT_NEAR(SlavePressure(s, ds, x), MasterPressure(m, dm, depth, x), 1e-9);
+}
+
+TEST(EqualPressureShare, CubicLawsAndOrderOfBodies) {
+  // cubic laws: the pressures agree to round-off, and swapping the roles gives the complement
+  // (at x = 0: 11.63 vs 16.09; at x = depth: 15.66 vs 12.53, so the split is inside)
+  const Stiffness s = Law(10, 3, 0.5, 0.01), m = Law(8, 1, 0.2, 0.05);
+  const double ds = 1.0, dm = 3.0, depth = 1.0;
+  const double x = EqualPressureShare(s, ds, m, dm, depth, 0.3, kNullBand);
+  EXPECT_GT(x, 0.0);
+  EXPECT_LT(x, depth);
+  EXPECT_NEAR(SlavePressure(s, ds, x), MasterPressure(m, dm, depth, x), 1e-10);
+  const double y = EqualPressureShare(m, dm, s, ds, depth, 0.7, kNullBand);
+  EXPECT_NEAR(x + y, depth, 1e-12);
+}
+
+TEST(EqualPressureShare, StifferSideTakesNone) {
+  // a slave already harder than the master can become at the full depth: the master takes it all
+  EXPECT_EQ(EqualPressureShare(Law(500, 100), 5.0, Law(100, 10), 0.0, 0.2, 0.5, kNullBand), 0.0);
+  // and the reverse: the slave takes it all
+  EXPECT_EQ(EqualPressureShare(Law(100, 10), 0.0, Law(500, 100), 5.0, 0.2, 0.5, kNullBand), 0.2);
+}
+
+TEST(EqualPressureShare, FlatLawsKeepTheta) {
+  // equal A inside the null band: every split equalises, theta's is kept (Eq. 7)
+  EXPECT_DOUBLE_EQ(EqualPressureShare(Law(300, 100), 0.0, Law(300, 200), 0.0, 0.2, 0.25, kNullBand), 0.05);
+  // unequal A inside the null band: the softer (lower A) side crushes until its pressure reaches the other's
+  const double x = EqualPressureShare(Law(300, 100), 0.4, Law(600, 100), 0.0, 0.5, 0.5, kNullBand);
+  EXPECT_DOUBLE_EQ(x, 0.5);
+}
+
+TEST(EqualPressureShare, SaturatedSideTakesTheRest) {
+  // the master saturated at 1.0 (held at 300 + 200 * 0.5 = 400): the slave crushes to 400 and stops
+  Stiffness m = Law(300, 200);
+  m.sat_crush = 1.0;
+  const Stiffness s = Law(300, 100);
+  const double x = EqualPressureShare(s, 0.5, m, 2.0, 3.0, 0.5, kNullBand);
+  EXPECT_NEAR(SlavePressure(s, 0.5, x), 400.0, 1e-9);
+  EXPECT_NEAR(x, 1.0, 1e-12);
+}
+
+TEST(EqualPressureShare, NoDepthNoShare) {
+  EXPECT_EQ(EqualPressureShare(Law(1, 1), 0.0, Law(1, 1), 0.0, 0.0, 0.5, kNullBand), 0.0);
+}
+
+}  // namespace
+}  // namespace dymesh

@@ -1,0 +1,95 @@
+// Two deformable boxes of unequal stiffness in line: crush shared at equal pressure (spec §5's
+// purpose, SMAC's rule), against the closed form, in either body order and with any pass count.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "dymesh/accel/embree_locator.h"
+#include "dymesh/core/results.h"
+#include "dymesh/core/simulation.h"
+#include "test_scenarios.h"
+
+namespace dymesh {
+namespace {
+
+namespace u = dymesh::units;
+
+constexpr double kNullBandIn = 0.5;  // the default NULL_TEST [in]
+constexpr double kHeightIn = 30.0;   // conversion height of both boxes [in]
+
+struct Law2D {
+  double a, b;  // [lb/in], [lb/in^2]
+  // force per unit width of spec §3 (Eq. 1 per width) at crush c [in]
+  double ForcePerWidth(double c) const { return c <= kNullBandIn ? a : a + b * (c - kNullBandIn); }
+};
+
+// soft and hard boxes head-on at 15 mph each, fronts 1 in apart; `soft_first` picks the body order
+Scenario InLine(Law2D soft, Law2D hard, bool soft_first, int passes) {
+  Scenario s;
+  s.file = "(unequal stiffness test)";
+  s.units = UnitSystem::kUS;
+  s.time_step = 0.0005;
+  s.duration = 0.4;
+  s.contact.passes_per_step = passes;
+  BodySpec a = testing::BoxVehicle("soft", 180, 66, 30, {1, 22, 10}, 3000, soft.a, soft.b, kHeightIn, 0.0);
+  a.initial.velocity = Vec3(15 * u::kMph, 0, 0);
+  BodySpec b = testing::BoxVehicle("hard", 180, 66, 30, {1, 22, 10}, 3000, hard.a, hard.b, kHeightIn, 0.0);
+  b.initial.position = Vec3(181, 0, 0) * u::kInch;
+  b.initial.yaw = 3.14159265358979323846;
+  b.initial.velocity = Vec3(-15 * u::kMph, 0, 0);
+  s.bodies = soft_first ? std::vector<BodySpec>{a, b} : std::vector<BodySpec>{b, a};
+  return s;
+}
+
+struct Crush {
+  double soft, hard;  // [in] largest dynamic crush of each
+};
+
+Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
+  auto device = std::make_shared<const EmbreeDevice>();
+  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  sim.Run();
+  const Summary s = Summarize(sim);
+  Crush c{};
+  for (const BodySummary& b : s.bodies) (b.name == "soft" ? c.soft : c.hard) = b.max_dynamic_crush / u::kInch;
+  EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02);
+  // flat fronts meet flat fronts: the node laws account for the contact work (2 %); not where the
+  // sides differ in A (the harder side's uncrushed nodes report their own A while the softer side
+  // crushes at less: 4 % more contact work than node-law work, a known limit in the README)
+  if (law_accounts_for_work) {
+    EXPECT_NEAR(s.law_energy, s.crush_energy, 0.02 * s.crush_energy);
+  }
+  std::printf("[measured] node law / contact work %.4f\n", s.law_energy / s.crush_energy);
+  return c;
+}
+
+// equal pressure at maximum engagement: a_s + b_s (C_s - d0) = a_h + b_h (C_h - d0), both past d0
+void ExpectEqualPressure(Law2D soft, Law2D hard, const char* label) {
+  const bool equal_a = soft.a == hard.a;
+  for (int passes : {2, 3}) {
+    for (bool soft_first : {true, false}) {
+      const Crush c = Run(InLine(soft, hard, soft_first, passes), equal_a);
+      const double f_soft = soft.ForcePerWidth(c.soft), f_hard = hard.ForcePerWidth(c.hard);
+      // 5 %: the bar for Newton's third law per unit width (measured under 0.5 %)
+      EXPECT_NEAR(f_soft, f_hard, 0.05 * f_hard) << label << " passes " << passes << " soft first " << soft_first;
+      // the closed-form crush of the soft side given the hard side's: C_s = d0 + (f_h - a_s) / b_s
+      const double expected_soft = kNullBandIn + (f_hard - soft.a) / soft.b;
+      EXPECT_NEAR(c.soft, expected_soft, 0.10 * expected_soft) << label;
+      std::printf("[measured] %s, passes %d, soft first %d: crush %.3f / %.3f in, force per width %.1f / %.1f lb/in\n",
+                  label, passes, soft_first, c.soft, c.hard, f_soft, f_hard);
+    }
+  }
+}
+
+TEST(UnequalStiffness, DoubleBSharesAtEqualPressure) {
+  // equal A, B doubled: (C_s - d0) / (C_h - d0) = 2
+  ExpectEqualPressure({300, 100}, {300, 200}, "B 100 vs 200");
+}
+
+TEST(UnequalStiffness, DoubleAsharesAtEqualPressure) {
+  // equal B, A doubled: C_s - C_h = (a_h - a_s) / B = 3 in
+  ExpectEqualPressure({300, 100}, {600, 100}, "A 300 vs 600");
+}
+
+}  // namespace
+}  // namespace dymesh
