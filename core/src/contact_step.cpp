@@ -65,7 +65,8 @@ struct ContactEngine::PassFrame {
   Mat3 r_master, r_slave;   // body -> earth
   Mat3 r_slave_to_master;   // slave body -> master body
   Vec3 t_slave_to_master;   // slave CG in the master frame
-  bool share;               // split the penetration by theta (else the slave restores all of it)
+  bool stage;               // keep the slave's new crush pending until after the sibling pass
+  std::vector<Vec3>* pending;  // [m] the slave's new Delta of the nodes that moved (n_vertices)
   double mu;                // contact friction coefficient of the pair
 
   Vec3 ToMaster(const Vec3& p_slave) const { return r_slave_to_master * p_slave + t_slave_to_master; }
@@ -103,6 +104,9 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   chunk_max_.resize(n);
   for (int i = 0; i < n; ++i) InitBounds(i);
   touching_.resize(static_cast<size_t>(n) * n);
+  pending_delta_.resize(n);
+  moved_.resize(n);
+  for (int i = 0; i < n; ++i) pending_delta_[i].resize(models_[i]->mesh.vertices.size());
   touching_mark_.resize(n);
 }
 
@@ -163,18 +167,28 @@ StepResult ContactEngine::Step(double dt) {
       auto& touching = touching_[static_cast<size_t>(a) * n + b];
       const int passes = options_.passes_per_step;
       std::vector<PassSums> sums(passes);
-      for (int pass = 0; pass < passes; ++pass) {
-        // a rigid body is always the master; two deformable bodies swap roles every pass, and the
-        // first slave alternates between steps so that neither body is favoured by the order
-        int master = ((pass + step_index_) % 2 == 0) ? a : b;
-        if (models_[a]->rigid) master = a;
-        if (models_[b]->rigid) master = b;
+      auto run = [&](int pass, int master, bool stage) {
         const int slave = master == a ? b : a;
-        // spec §5: the first pass splits each penetration so the two law pressures are equal; the
-        // later passes find the master's share on the other side and restore it in full, so every
-        // overlap is absorbed once
-        const bool share = pass == 0;
-        sums[pass] = RunPass(master, slave, share, &touching[slave == a ? 0 : 1], dt, &result.diagnostics);
+        sums[pass] = RunPass(master, slave, stage, &touching[slave == a ? 0 : 1], dt, &result.diagnostics);
+      };
+      if (models_[a]->rigid || models_[b]->rigid) {
+        // a rigid body is always the master and takes none of the crush
+        const int master = models_[a]->rigid ? a : b;
+        for (int pass = 0; pass < passes; ++pass) run(pass, master, false);
+      } else {
+        // spec §1 swapping, simultaneously: each pair of passes lets both bodies, as slaves, find the
+        // overlap against the other's surface as it was before the pair, each taking its
+        // equal-pressure share (spec §5); both shares are committed together, so an overlap is
+        // absorbed once and neither body's order or role is favoured
+        int pass = 0;
+        for (; pass + 1 < passes; pass += 2) {
+          run(pass, b, true);
+          run(pass + 1, a, true);
+          CommitPending(a);
+          CommitPending(b);
+        }
+        // an odd last pass: one side, alternating between steps (its master's share waits for the next)
+        if (pass < passes) run(pass, step_index_ % 2 == 0 ? b : a, false);
       }
       result.pairs.push_back(CombinePasses(a, b, sums));
     }
@@ -266,18 +280,23 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   const bool found = LocateNode(f, v, &out->scratch, &hit);
   if (found) ++out->diag.located;
   if (!found && !was_touching) return;
-  const Vec3 old_position = f.slave->vertices[v];
+  Vec3 delta;
   const double node_force =
-      RestoreNode(f, v, found ? &hit : nullptr, was_touching, dt, &out->diag, &out->sums.law_energy);
-  if (f.slave->vertices[v] != old_position) out->moved.push_back(v);
+      RestoreNode(f, v, found ? &hit : nullptr, was_touching, dt, &out->diag, &out->sums.law_energy, &delta);
+  if (delta != f.slave->delta[v]) {
+    // the new crush waits in pending_delta_ until committed (with the sibling pass, or at once)
+    (*f.pending)[v] = delta;
+    out->moved.push_back(v);
+  }
   if (node_force <= 0.0) return;
   out->touching.push_back(v);
   ++out->diag.touching;
 
   // both bodies are loaded at the same point, the slave node where it now is (momentum and angular
   // momentum conserved to round-off)
-  const Vec3 arm_slave = f.r_slave * f.slave->vertices[v];
-  const Vec3 arm_master = f.r_master * f.ToMaster(f.slave->vertices[v]);
+  const Vec3 node = f.slave_model->mesh.vertices[v] + delta;
+  const Vec3 arm_slave = f.r_slave * node;
+  const Vec3 arm_master = f.r_master * f.ToMaster(node);
   // determinism: within a chunk, sums run in ascending node order
   out->sums.touching_area += f.slave->node_area[v];
   // normal force along the master surface normal: without friction there is no tangential force
@@ -293,11 +312,11 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   }
 }
 
-ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share, std::vector<int>* touching,
+ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage, std::vector<int>* touching,
                                               double dt, ContactDiagnostics* diag) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
-              Mat3::Identity(), Vec3::Zero(), share,
+              Mat3::Identity(), Vec3::Zero(), stage, &pending_delta_[slave],
               0.5 * (models_[master]->friction + models_[slave]->friction)};
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
@@ -338,13 +357,25 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool share
   *touching = std::move(now_touching);
   f.slave->law_energy += sums.law_energy;
 
-  // crushed nodes change the slave's triangles, bounds and search structure (refit)
-  if (!moved.empty()) {
-    UpdateTriangles(*f.slave_model, moved, f.slave);
-    GrowBounds(slave, moved);
-    locators_[slave]->Update(f.slave->vertices, moved);
-  }
+  // crushed nodes change the slave's triangles, bounds and search structure (refit), now or after
+  // the sibling pass
+  moved_[slave] = std::move(moved);
+  if (!stage) CommitPending(slave);
   return sums;
+}
+
+void ContactEngine::CommitPending(int body) {
+  BodyState& s = states_[body];
+  const std::vector<int>& moved = moved_[body];
+  if (moved.empty()) return;
+  for (int v : moved) {
+    s.delta[v] = pending_delta_[body][v];
+    s.vertices[v] = models_[body]->mesh.vertices[v] + s.delta[v];
+  }
+  UpdateTriangles(*models_[body], moved, &s);
+  GrowBounds(body, moved);
+  locators_[body]->Update(s.vertices, moved);
+  moved_[body].clear();
 }
 
 PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>& sums) const {
@@ -462,7 +493,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>
 }
 
 double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
-                                  ContactDiagnostics* diag, double* law_energy) const {
+                                  ContactDiagnostics* diag, double* law_energy, Vec3* new_delta) const {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
   const Stiffness& k = m.VertexStiffness(v);
@@ -476,18 +507,23 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   }
   const double deflection = s.delta[v].norm();
   Vec3 delta = s.delta[v];
+  *new_delta = delta;
   bool touching = false;
   // the master's outward normal in the slave frame: the node is pushed out of the master along it,
   // the way a frictionless surface pushes (no sideways drag whatever the search direction)
   const Vec3 normal_slave = hit ? Vec3(f.r_slave_to_master.transpose() * hit->normal) : Vec3::Zero();
 
-  if (hit && hit->depth >= -options_.contact_tolerance) {
+  // the surfaces' relative motion along the normal over the step (> 0: the slave node leaves the master)
+  const bool inside = hit && hit->depth >= -options_.contact_tolerance;
+  const double receding = hit ? hit->rel_velocity.dot(hit->normal) * dt : 0.0;  // [m]
+  if (inside && receding <= 0.0) {
     // spec §5: two deformable sides split the penetration so their law pressures are equal (theta
     // is the first estimate); the master triangle's stiffness and deflection are its corners'
-    // averages; a rigid master takes none, and a later pass restores the master's share in full
+    // averages; the master's share is taken by its own nodes in the sibling pass; a rigid master
+    // takes none
     const double depth = std::max(hit->depth, 0.0);
     double push = depth;
-    if (!f.master_model->rigid && f.share) {
+    if (!f.master_model->rigid) {
       const auto& tri = f.master_model->mesh.triangles[hit->triangle];
       const Stiffness k_m = CornerAverage(*f.master_model, tri);
       double deflection_m = 0.0;
@@ -522,8 +558,9 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     delta += push * normal_slave;
     touching = true;
   } else if (can_spring && deflection > 0.0) {
-    // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max
-    const double gap = hit ? -hit->depth : INFINITY;
+    // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max;
+    // a node still inside a receding surface (an overlap a step left over) follows it by its motion
+    const double gap = !hit ? INFINITY : inside ? receding : -hit->depth;
     const double available = std::max(deflection - (1.0 - e) * s.delta_max[v], 0.0);
     const double spring = std::min(gap, available);
     delta *= (deflection - spring) / deflection;
@@ -540,6 +577,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   }
 
   // spec §6: DeltaMaxTotal, the unloading state machine and the node law
+  const double peak = s.delta_max[v];
   s.delta_max[v] = std::max(s.delta_max[v], new_deflection);
   s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
   const double area = touching ? ProjectedNodeArea(m, s, v, normal_slave) : s.node_area[v];
@@ -547,11 +585,10 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       touching ? area * NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_) : 0.0;
 
   // work of the node law over the deflection change, then commit the new position
-  *law_energy += area * NodeLawWork(s.unload[v], k, deflection, new_deflection, s.delta_max[v], e, options_);
+  *law_energy += area * NodeLawWork(k, deflection, new_deflection, peak, e, options_);
   s.node_force[v] = force;
   s.node_area[v] = area;
-  s.delta[v] = delta;
-  s.vertices[v] = m.mesh.vertices[v] + delta;
+  *new_delta = delta;
   return force;
 }
 

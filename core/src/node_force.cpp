@@ -77,17 +77,37 @@ double NodePressure(UnloadState state, bool touching, const Stiffness& k, double
   return 0.0;
 }
 
-double NodeLawWork(UnloadState state, const Stiffness& k, double from, double to, double delta_max,
-                   double restitution, const ContactOptions& o) {
-  // the branch the node is on after the update: loading curve, or the rebound curve
-  const bool loading = state == UnloadState::kCannotUnload || state == UnloadState::kStartUnload ||
-                       state == UnloadState::kCanUnload;
-  auto pressure = [&](double delta) {
-    return loading ? LoadingPressure(k, delta, o.null_band)
-                   : ReboundPressure(k, delta, delta_max, restitution, o.null_band, o.rebound_law);
+double NodeLawWork(const Stiffness& k, double from, double to, double peak, double restitution,
+                   const ContactOptions& o) {
+  auto loading = [&](double delta) { return LoadingPressure(k, delta, o.null_band); };
+  auto rebound = [&](double delta) {
+    return ReboundPressure(k, delta, peak, restitution, o.null_band, o.rebound_law);
   };
-  // Simpson's rule: exact for the cubic between the kinks (null band, saturation, zero force)
-  return (to - from) / 6.0 * (pressure(from) + 4.0 * pressure(0.5 * (from + to)) + pressure(to));
+  // the kinks of both curves, where Simpson's rule must not straddle
+  const double relaxed = (1.0 - restitution) * peak;
+  const double scaled_band = relaxed + restitution * o.null_band;  // rebound's null band (scaled law)
+  const double kinks[] = {o.null_band, k.sat_crush, relaxed, scaled_band};
+  auto integrate = [&](const auto& pressure, double a, double b) {
+    // signed integral from a to b, split at every kink inside
+    const double lo = std::min(a, b), hi = std::max(a, b);
+    double cuts[6] = {lo};
+    int n = 1;
+    for (double x : kinks) {
+      if (x > lo && x < hi) cuts[n++] = x;
+    }
+    std::sort(cuts, cuts + n);
+    cuts[n++] = hi;
+    double sum = 0.0;
+    for (int i = 0; i + 1 < n; ++i) {
+      const double x0 = cuts[i], x1 = cuts[i + 1];
+      sum += (x1 - x0) / 6.0 * (pressure(x0) + 4.0 * pressure(0.5 * (x0 + x1)) + pressure(x1));
+    }
+    return b >= a ? sum : -sum;
+  };
+  // below the peak on the rebound curve, beyond it on the loading curve
+  const double below_from = std::min(from, peak), below_to = std::min(to, peak);
+  const double above_from = std::max(from, peak), above_to = std::max(to, peak);
+  return integrate(rebound, below_from, below_to) + integrate(loading, above_from, above_to);
 }
 
 }  // namespace dymesh

@@ -115,5 +115,31 @@ TEST(UnloadStateMachine, FullCycle) {
   EXPECT_EQ(NextUnloadState(UnloadState::kNowUnloading, false, 0.9, 1.0, e, o), UnloadState::kFinishedUnloading);
 }
 
+TEST(NodeLawWork, LoadingMatchesTheClosedFormIntegral) {
+  // from 0 to 3.5 across the null band: A * 3.5 + B x^2/2 + C x^3/3 + D x^4/4 with x = 3
+  const Stiffness k = Cubic();
+  ContactOptions o;
+  o.null_band = 0.5;
+  const double x = 3.0, expected = 10 * 3.5 + 3 * x * x / 2 + 0.5 * x * x * x / 3 + 0.01 * x * x * x * x / 4;
+  EXPECT_NEAR(NodeLawWork(k, 0.0, 3.5, 0.0, 0.2, o), expected, 1e-12 * expected);
+}
+
+TEST(NodeLawWork, UnloadAndReloadBelowThePeakCostNothing) {
+  // spec §6: below the peak the node travels its rebound curve both ways, so a cycle stores and
+  // returns the same energy; only the part past the old peak is on the loading curve
+  const Stiffness k = Cubic();
+  ContactOptions o;
+  o.null_band = 0.5;
+  const double peak = 4.0, e = 0.3;
+  const double out = NodeLawWork(k, peak, 3.0, peak, e, o);  // unloading: energy given back
+  const double back = NodeLawWork(k, 3.0, peak, peak, e, o);
+  EXPECT_LT(out, 0.0);
+  EXPECT_NEAR(out + back, 0.0, 1e-12);
+  // reloading past the peak: the rebound curve up to it, the loading curve beyond
+  EXPECT_NEAR(NodeLawWork(k, 3.0, 5.0, peak, e, o), back + NodeLawWork(k, peak, 5.0, peak, e, o), 1e-12);
+  // the relaxed part (below (1 - e) peak) carries no force (Eq. 8)
+  EXPECT_EQ(NodeLawWork(k, 2.0, 2.5, peak, e, o), 0.0);
+}
+
 }  // namespace
 }  // namespace dymesh

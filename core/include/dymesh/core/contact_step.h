@@ -109,7 +109,7 @@ class ContactEngine {
       moved.clear();
     }
   };
-  PassSums RunPass(int master, int slave, bool share, std::vector<int>* touching, double dt,
+  PassSums RunPass(int master, int slave, bool stage, std::vector<int>* touching, double dt,
                    ContactDiagnostics* diag);
   std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const std::vector<int>& touching);
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const;
@@ -118,7 +118,8 @@ class ContactEngine {
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
                        const Vec3& inward, bool poly_normal, const Located* best, Located* out) const;
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
-                     ContactDiagnostics* diag, double* law_energy) const;
+                     ContactDiagnostics* diag, double* law_energy, Vec3* new_delta) const;
+  void CommitPending(int body);
   bool BoundsOverlap(int a, int b) const;
   void InitBounds(int body);
   void GrowBounds(int body, const std::vector<int>& moved);
@@ -130,6 +131,8 @@ class ContactEngine {
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
   std::vector<std::array<std::vector<int>, 2>> touching_;
   std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop
+  std::vector<std::vector<Vec3>> pending_delta_;  // [m] per body: new Delta awaiting commit (n_vertices)
+  std::vector<std::vector<int>> moved_;           // per body: nodes whose pending Delta awaits commit
   std::vector<std::vector<char>> touching_mark_;  // per body: 1 for nodes touching the current master  // per pair (a<b): nodes of a, of b touching the other
   ContactOptions options_;
   int step_index_ = 0;

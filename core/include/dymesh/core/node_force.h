@@ -33,9 +33,12 @@ UnloadState NextUnloadState(UnloadState state, bool touching, double delta, doub
 double NodePressure(UnloadState state, bool touching, const Stiffness& k, double delta,
                     double delta_max, double restitution, const ContactOptions& options);
 
-/// Work per unit area [N/m] of the node law from deflection `from` to `to` on the branch of `state`
-/// (loading curve, or rebound curve for unloading states): Simpson's rule, exact for the cubic.
-double NodeLawWork(UnloadState state, const Stiffness& k, double from, double to, double delta_max,
-                   double restitution, const ContactOptions& options);
+/// Work per unit area [N/m] of the node law when a node's deflection goes from `from` to `to`, given
+/// the largest deflection it had reached before (`peak`, DeltaMaxTotal before the update): up to the
+/// peak the node travels its rebound curve (unloading gives energy back, reloading takes the same
+/// back), past the peak the loading curve (spec §3, §6). Simpson's rule between the laws' kinks
+/// (null band, saturation, the zero-force point of Eq. 8): exact for the cubic pieces.
+double NodeLawWork(const Stiffness& k, double from, double to, double peak, double restitution,
+                   const ContactOptions& options);
 
 }  // namespace dymesh
