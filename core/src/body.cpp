@@ -38,6 +38,7 @@ BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid) {
   s.node_area.assign(nv, 0.0);
   s.update_step.assign(nv, -1);
   s.step_start_deflection.assign(nv, 0.0);
+  s.contact_normal.assign(nv, Vec3::Zero());
   s.tri_normal.assign(nt, Vec3::Zero());
   s.tri_centre.assign(nt, Vec3::Zero());
   s.tri_area.assign(nt, 0.0);

@@ -277,7 +277,7 @@ std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, i
 void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const {
   // locate, then restore and evaluate the node law
   Located hit;
-  const bool found = LocateNode(f, v, &out->scratch, &hit);
+  const bool found = LocateNode(f, v, was_touching, &out->scratch, &hit);
   if (found) ++out->diag.located;
   if (!found && !was_touching) return;
   Vec3 delta;
@@ -288,6 +288,8 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
     (*f.pending)[v] = delta;
     out->moved.push_back(v);
   }
+  // the contact normal a touching node keeps (slave frame); none once it lets go
+  f.slave->contact_normal[v] = node_force > 0.0 ? Vec3(f.r_slave_to_master.transpose() * hit.normal) : Vec3::Zero();
   if (node_force <= 0.0) return;
   out->touching.push_back(v);
   ++out->diag.touching;
@@ -404,7 +406,8 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
 }
 
 bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p,
-                                    const Vec3& ray_dir, const Vec3& inward, bool poly_normal, const Located* best,
+                                    const Vec3& ray_dir, const Vec3& inward, const Vec3& previous, bool poly_normal,
+                                    const Located* best,
                                     Located* out) const {
   const int t = candidate.triangle;
   const auto& tri = f.master_model->mesh.triangles[t];
@@ -417,6 +420,7 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candida
   if (d.dot(n) <= kMinFacing) return false;
   // the two surfaces face each other: the master's outward normal points into the slave
   if (n.dot(inward) <= kMinFacing) return false;
+  if (n.dot(previous) < 0.0) return false;
   double depth = 0.0;
   if (!RayPlaneDistance(p, d, a, n, &depth)) return false;
   if (depth < -options_.search_backoff || depth > options_.toofar_maximum) return false;
@@ -433,7 +437,8 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candida
   return true;
 }
 
-bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>* tris, Located* out) const {
+bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, std::vector<Candidate>* tris,
+                               Located* out) const {
   const Vec3& p_slave = f.slave->vertices[v];
   const Vec3 p = f.ToMaster(p_slave);
   const Vec3 v_rel = f.RelativeVelocity(p_slave, p);
@@ -441,6 +446,9 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>
 
   // search direction (spec §2): the pushback direction, pointing out of the master into the slave
   const Vec3 inward = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
+  // a node in contact keeps meeting faces turned the same way (it left the last one through its
+  // outside): a crushed-through panel's inner face does not take over and pull it in
+  const Vec3 previous = was_touching ? Vec3(f.r_slave_to_master * f.slave->contact_normal[v]) : Vec3::Zero();
   Vec3 dir = Vec3::Zero();
   switch (options_.search_direction) {
     case SearchDirection::kVelocity:
@@ -486,7 +494,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, std::vector<Candidate>
                      : options_.stop_rule == StopRule::kBestOfTwo ? 2 : INT32_MAX;
   int accepted = 0;
   for (const Candidate& c : *tris) {
-    if (ExamineTriangle(f, c, p, dir, inward, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
+    if (ExamineTriangle(f, c, p, dir, inward, previous, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
   }
   out->rel_velocity = v_rel;
   return accepted > 0;

@@ -52,6 +52,7 @@ struct BodyState {
   std::vector<double> node_force;    ///< [N] last node force magnitude (n_vertices)
   std::vector<double> node_area;     ///< [m^2] last tributary area projected on the pushback direction (n_vertices)
   std::vector<int> update_step;      ///< step of the node's last update, -1 before any (n_vertices)
+  std::vector<Vec3> contact_normal;  ///< [-] master's outward normal at the node's last contact, body frame; zero when free (n_vertices)
   std::vector<double> step_start_deflection;  ///< [m] |Delta| when the current step began (n_vertices)
   std::vector<Vec3> tri_normal;      ///< [-] unit outward normal, body frame (n_triangles)
   std::vector<Vec3> tri_centre;      ///< [m] centre, body frame (n_triangles)

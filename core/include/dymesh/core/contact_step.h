@@ -114,9 +114,10 @@ class ContactEngine {
   std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const std::vector<int>& touching);
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const;
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
-  bool LocateNode(const PassFrame& f, int v, std::vector<Candidate>* scratch, Located* out) const;
+  bool LocateNode(const PassFrame& f, int v, bool was_touching, std::vector<Candidate>* scratch, Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
-                       const Vec3& inward, bool poly_normal, const Located* best, Located* out) const;
+                       const Vec3& inward, const Vec3& previous, bool poly_normal, const Located* best,
+                       Located* out) const;
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta) const;
   void CommitPending(int body);
