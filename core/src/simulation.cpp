@@ -35,13 +35,18 @@ std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& sc
   return models;
 }
 
-Simulation::Simulation(const Scenario& scenario, const LocatorFactory& make_locator) : scenario_(scenario) {
+Simulation::Simulation(const Scenario& scenario, const LocatorFactory& make_locator)
+    : Simulation(scenario, BuildBodyModels(scenario), make_locator) {}
+
+Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
+                       const LocatorFactory& make_locator)
+    : scenario_(scenario) {
   std::vector<RigidState> initial;
   for (const BodySpec& b : scenario_.bodies) {
     initial.push_back(b.initial);
     rest_height_.push_back(b.initial.position.z());
   }
-  engine_ = std::make_unique<ContactEngine>(BuildBodyModels(scenario_), initial, scenario_.contact, make_locator);
+  engine_ = std::make_unique<ContactEngine>(std::move(models), initial, scenario_.contact, make_locator);
   Record(nullptr);
 }
 

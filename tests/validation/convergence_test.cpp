@@ -1,7 +1,11 @@
-// Time-step and mesh convergence of delta-V in a car-to-car collision on real meshes.
+// Convergence and invariance of car-to-car collisions on real meshes (p406 and stock car): the
+// shipped side-impact demo, a 45-degree oblique impact and an offset frontal, each against halving the
+// time step, subdividing one mesh 1:4, turning the body frames by 10 degrees, and swapping body order.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/core/results.h"
@@ -10,41 +14,89 @@
 namespace dymesh {
 namespace {
 
-Scenario CarToCar() {
-  return LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/car_to_car_side.json");
-}
+Scenario Demo(const std::string& name) { return LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/" + name); }
 
-std::vector<double> DeltaVs(const Scenario& scenario) {
+// what must not move: each body's delta-V, the contact work, and the energy balance
+struct Outcome {
+  std::vector<double> delta_v;  // [m/s] by body name order of the base scenario
+  double crush = 0.0;           // [J] ledger crush work, all bodies
+  double friction = 0.0;        // [J] ledger friction work, all bodies
+  double balance = 0.0;
+};
+
+// the run; `swap` reverses the body order (results are mapped back to the base order)
+Outcome Run(Scenario s, bool swap, std::vector<std::shared_ptr<const BodyModel>> models = {}) {
+  if (swap) std::swap(s.bodies[0], s.bodies[1]);
+  if (swap && !models.empty()) std::swap(models[0], models[1]);
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  Simulation sim = models.empty() ? Simulation(s, MakeEmbreeLocatorFactory(device))
+                                  : Simulation(s, models, MakeEmbreeLocatorFactory(device));
   sim.Run();
-  const Summary s = Summarize(sim);
-  return {s.bodies[0].delta_v, s.bodies[1].delta_v};
+  const Summary sum = Summarize(sim);
+  Outcome o;
+  o.delta_v = {sum.bodies[0].delta_v, sum.bodies[1].delta_v};
+  if (swap) std::swap(o.delta_v[0], o.delta_v[1]);
+  o.crush = sum.crush_energy;
+  o.friction = sum.friction_energy;
+  o.balance = sum.energy_balance_error;
+  return o;
 }
 
-// the criterion: a refinement changes each delta-V by under 2 %
-void ExpectWithinTwoPercent(const std::vector<double>& coarse, const std::vector<double>& fine) {
-  for (size_t i = 0; i < coarse.size(); ++i) {
-    EXPECT_GT(coarse[i], 0.5);  // a real collision, not two near misses [m/s]
-    EXPECT_NEAR(fine[i], coarse[i], 0.02 * coarse[i]) << "body " << i;
-    std::printf("[measured] body %zu delta-V %.4f -> %.4f m/s (%.2f %%)\n", i, coarse[i], fine[i],
-                100 * (fine[i] - coarse[i]) / coarse[i]);
+// a body-frame change: every mesh turned by `angle` about the body's vertical, the body turned back
+// by the same angle, so the physical scene is unchanged (inertia turned with the mesh)
+Outcome RunInTurnedBodyFrames(Scenario s, double angle) {
+  const Mat3 turn = BodyToEarth(0.0, 0.0, angle);
+  std::vector<std::shared_ptr<const BodyModel>> models;
+  for (const auto& m : BuildBodyModels(s)) {
+    TriMesh mesh = m->mesh;
+    for (Vec3& p : mesh.vertices) p = turn * p;
+    BodyModel turned = MakeBodyModel(m->name, std::move(mesh), m->stiffness, m->mass,
+                                     turn * m->inertia * turn.transpose(), m->restitution, m->friction, m->rigid);
+    // the same body described in another frame: each vertex keeps its surface (and stiffness), which
+    // the body axes would otherwise reassign near the 45-degree borders between faces
+    turned.surface = m->surface;
+    models.push_back(std::make_shared<const BodyModel>(std::move(turned)));
   }
+  for (BodySpec& b : s.bodies) b.initial.yaw -= angle;
+  return Run(s, false, models);
 }
 
-TEST(Convergence, HalvingTheTimeStep) {
-  const Scenario base = CarToCar();
-  Scenario half = base;
-  half.time_step = base.time_step / 2;
-  ExpectWithinTwoPercent(DeltaVs(base), DeltaVs(half));
+// the bar: each variant changes delta-V and the contact work (crush + friction) by under 2 %,
+// and balances within 2 %. The split of that work between crush and friction is printed, not held to
+// 2 %: it moves by up to 3.3 % (offset frontal, p406 mesh 1:4), a known limit in the README.
+void ExpectClose(const Outcome& base, const Outcome& v, const std::string& label) {
+  for (size_t i = 0; i < base.delta_v.size(); ++i) {
+    EXPECT_GT(base.delta_v[i], 1.0) << label;  // a real collision [m/s]
+    EXPECT_NEAR(v.delta_v[i], base.delta_v[i], 0.02 * base.delta_v[i]) << label << " body " << i;
+  }
+  const double work = base.crush + base.friction;
+  EXPECT_NEAR(v.crush + v.friction, work, 0.02 * work) << label;
+  EXPECT_NEAR(v.balance, 0.0, 0.02) << label;
+  std::printf("[measured] %s: delta-V %+.2f %% / %+.2f %%, contact work %+.2f %% (crush %+.2f %%, friction %+.2f %%)\n",
+              label.c_str(), 100 * (v.delta_v[0] / base.delta_v[0] - 1), 100 * (v.delta_v[1] / base.delta_v[1] - 1),
+              100 * ((v.crush + v.friction) / work - 1), 100 * (v.crush / base.crush - 1),
+              100 * (v.friction / base.friction - 1));
 }
 
-TEST(Convergence, SubdividingTheMeshes) {
-  const Scenario base = CarToCar();
-  Scenario fine = base;
-  for (BodySpec& b : fine.bodies) b.mesh.subdivisions += 1;  // four times the triangles
-  ExpectWithinTwoPercent(DeltaVs(base), DeltaVs(fine));
+void ExpectConverged(const std::string& name) {
+  const Scenario base_scenario = Demo(name);
+  const Outcome base = Run(base_scenario, false);
+  Scenario half = base_scenario;
+  half.time_step /= 2;
+  ExpectClose(base, Run(half, false), name + " dt/2");
+  Scenario fine = base_scenario;
+  fine.bodies[0].mesh.subdivisions += 1;
+  ExpectClose(base, Run(fine, false), name + " p406 mesh 1:4");
+  ExpectClose(base, RunInTurnedBodyFrames(base_scenario, 10.0 * units::kDegree), name + " body frames +10 deg");
+  // body order: bit-identical physics (the pair's passes run simultaneously), so exact equality
+  const Outcome swapped = Run(base_scenario, true);
+  EXPECT_EQ(swapped.delta_v, base.delta_v) << name;
+  EXPECT_EQ(swapped.crush, base.crush) << name;
 }
+
+TEST(Convergence, SideImpactDemo) { ExpectConverged("car_to_car_side.json"); }
+TEST(Convergence, Oblique45Degrees) { ExpectConverged("car_to_car_oblique.json"); }
+TEST(Convergence, OffsetFrontal) { ExpectConverged("car_to_car_offset.json"); }
 
 }  // namespace
 }  // namespace dymesh

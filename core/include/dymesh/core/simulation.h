@@ -30,6 +30,11 @@ class Simulation {
  public:
   Simulation(const Scenario& scenario, const LocatorFactory& make_locator);
 
+  /// The same run on body models already built (one per scenario body, in order), e.g. shared
+  /// between runs or prepared by the caller; the scenario's mesh sources are not read.
+  Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
+             const LocatorFactory& make_locator);
+
   /// Runs to the scenario's duration (or separation). `on_step(time)` is called after each step;
   /// returning false stops the run there. Returns true when the run reached its end.
   bool Run(const std::function<bool(double)>& on_step = {});
