@@ -65,7 +65,6 @@ struct ContactEngine::PassFrame {
   Mat3 r_master, r_slave;   // body -> earth
   Mat3 r_slave_to_master;   // slave body -> master body
   Vec3 t_slave_to_master;   // slave CG in the master frame
-  bool stage;               // keep the slave's new crush pending until after the sibling pass
   std::vector<Vec3>* pending;  // [m] the slave's new Delta of the nodes that moved (n_vertices)
   double mu;                // contact friction coefficient of the pair
 
@@ -318,7 +317,7 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
                                               double dt, ContactDiagnostics* diag) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
-              Mat3::Identity(), Vec3::Zero(), stage, &pending_delta_[slave],
+              Mat3::Identity(), Vec3::Zero(), &pending_delta_[slave],
               0.5 * (models_[master]->friction + models_[slave]->friction)};
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
@@ -407,8 +406,7 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
 
 bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p,
                                     const Vec3& ray_dir, const Vec3& inward, const Vec3& previous, bool poly_normal,
-                                    const Located* best,
-                                    Located* out) const {
+                                    const Located* best, Located* out) const {
   const int t = candidate.triangle;
   const auto& tri = f.master_model->mesh.triangles[t];
   const Vec3& a = f.master->vertices[tri[0]];
@@ -444,7 +442,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, std
   const Vec3 v_rel = f.RelativeVelocity(p_slave, p);
   const double backoff = options_.search_backoff, reach = options_.toofar_maximum;
 
-  // search direction (spec §2): the pushback direction, pointing out of the master into the slave
+  // search direction (spec §2), pointing into the slave: it chooses the face; the push follows the face normal
   const Vec3 inward = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
   // a node in contact keeps meeting faces turned the same way (it left the last one through its
   // outside): a crushed-through panel's inner face does not take over and pull it in

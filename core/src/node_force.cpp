@@ -1,6 +1,7 @@
 #include "dymesh/core/node_force.h"
 
 #include <algorithm>
+#include <array>
 
 namespace dymesh {
 namespace {
@@ -88,14 +89,17 @@ double NodeLawWork(const Stiffness& k, double from, double to, double peak, doub
   const double scaled_band = relaxed + restitution * o.null_band;  // rebound's null band (scaled law)
   const double kinks[] = {o.null_band, k.sat_crush, relaxed, scaled_band};
   auto integrate = [&](const auto& pressure, double a, double b) {
-    // signed integral from a to b, split at every kink inside
+    if (a == b) return 0.0;
+    // signed integral from a to b, split at every kink inside (kept in order by insertion)
     const double lo = std::min(a, b), hi = std::max(a, b);
-    double cuts[6] = {lo};
+    std::array<double, 6> cuts{lo};
     int n = 1;
     for (double x : kinks) {
-      if (x > lo && x < hi) cuts[n++] = x;
+      if (!(x > lo && x < hi)) continue;
+      int i = n++;
+      for (; i > 1 && cuts[i - 1] > x; --i) cuts[i] = cuts[i - 1];
+      cuts[i] = x;
     }
-    std::sort(cuts, cuts + n);
     cuts[n++] = hi;
     double sum = 0.0;
     for (int i = 0; i + 1 < n; ++i) {
