@@ -132,7 +132,7 @@ std::string ResultRows(const Context& c) {
   s += Row(std::string("max permanent / dynamic crush [") + u.length_name + "]", PerBody(c, [&](int i) {
              return FormatFixed(b[i].max_crush * u.length, 2) + " / " + FormatFixed(b[i].max_dynamic_crush * u.length, 2);
            }));
-  s += Row(std::string("crush / friction energy [") + u.energy_name + "]", PerBody(c, [&](int i) {
+  s += Row(std::string("crush / friction work [") + u.energy_name + "]", PerBody(c, [&](int i) {
              return FormatFixed(b[i].crush_energy * u.energy, 0) + " / " + FormatFixed(b[i].friction_energy * u.energy, 0);
            }));
   s += Row(std::string("final speed [") + u.speed_name + "] / yaw rate [deg/s]", PerBody(c, [&](int i) {
@@ -156,6 +156,9 @@ std::string OverallTable(const Context& c) {
   t += Row(std::string("crush + friction energy [") + u.energy_name + "]",
            one(FormatFixed((s.crush_energy + s.friction_energy) * u.energy, 0)));
   t += Row("energy balance error (KE lost - crush - friction) / KE lost", one(FormatFixed(100.0 * s.energy_balance_error, 3) + " %"));
+  t += Row(std::string("node-law energy [") + u.energy_name + "] / discontinuity (crush work - node law)",
+           one(FormatFixed(s.law_energy * u.energy, 0) + " / " +
+               (s.crush_energy != 0.0 ? FormatFixed(100.0 * s.energy_discontinuity / s.crush_energy, 1) + " %" : "-")));
   t += Row(std::string("momentum before / after [") + u.momentum_name + "]",
            one(FormatFixed(s.momentum_before.norm() * u.momentum, 1) + " / " + FormatFixed(s.momentum_after.norm() * u.momentum, 1)));
   t += Row(std::string("closing / separation speed [") + u.speed_name + "]",
