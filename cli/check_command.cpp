@@ -8,6 +8,7 @@
 #include "dymesh/core/results.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/simulation.h"
+#include "dymesh/core/time_step_guide.h"
 
 namespace dymesh::cli {
 namespace {
@@ -60,6 +61,14 @@ int CheckCommand(const std::string& scenario_path, std::ostream& out) {
   out << Format("  units %s; time step %g s, duration %g s (%d steps)%s\n", scenario.units == UnitSystem::kUS ? "US" : "SI",
                 scenario.time_step, scenario.duration, static_cast<int>(scenario.duration / scenario.time_step + 0.5),
                 scenario.stop_at_separation ? ", stops at separation" : "");
+  // the contact period of the stiffest pair and the step it asks for
+  const TimeStepGuide guide = GuideTimeStep(scenario, models);
+  RefuseUnstableStep(scenario, guide);
+  if (guide.bounded)
+    out << Format("  contact period %.3g s (\"%s\" against \"%s\"): recommended step <= %.3g s, stable limit %.3g s%s\n",
+                  guide.contact_period, models[guide.body_a]->name.c_str(), models[guide.body_b]->name.c_str(),
+                  guide.recommended_step, guide.stable_limit,
+                  scenario.time_step > guide.recommended_step ? "; warning: the step is coarser than recommended" : "");
   for (int i = 0; i < static_cast<int>(models.size()); ++i) PrintBody(scenario, i, *models[i], out);
   out << "ok: scenario and " << models.size() << " meshes are valid\n";
   return kExitOk;

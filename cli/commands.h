@@ -6,8 +6,11 @@
 /// The dymesh subcommands, callable from main() and from tests. They hold no physics.
 namespace dymesh::cli {
 
-/// Exit codes: 0 done, 1 failure (e.g. cannot write), 2 refused input, 130 interrupted.
-inline constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitInterrupted = 130;
+/// Exit codes (README "Exit codes"): 0 complete with no warnings; 1 failure (e.g. cannot write);
+/// 2 refused input (scenario, mesh, option or output folder); 3 complete with warnings;
+/// 4 ended in contact; 5 failed numerics; 6 output folder in use by another run; 130 interrupted.
+inline constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitWarnings = 3, kExitEndedInContact = 4,
+                     kExitFailedNumerics = 5, kExitFolderBusy = 6, kExitInterrupted = 130;
 
 /// What `dymesh run` was asked to do.
 struct RunRequest {

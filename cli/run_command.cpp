@@ -43,6 +43,23 @@ void PrintOutputs(const WrittenOutputs& w, const std::string& dir, bool quiet, s
   for (const std::string& path : w.not_written) err << "  " << path << "\n";
 }
 
+// each warning on its own line: code, field, what was seen and what to do
+void PrintWarnings(const Summary& s, std::ostream& err) {
+  for (const RunWarning& w : s.warnings)
+    err << "warning [" << w.code << "] " << (w.field.empty() ? "" : w.field + ": ") << w.message << "\n";
+}
+
+// the exit code of a run that wrote all its outputs: only a clean complete run exits 0
+int ExitCodeOf(const Summary& s) {
+  switch (s.status) {
+    case RunStatus::kInterrupted: return kExitInterrupted;
+    case RunStatus::kFailedNumerics: return kExitFailedNumerics;
+    case RunStatus::kEndedInContact: return kExitEndedInContact;
+    case RunStatus::kComplete: break;
+  }
+  return s.warnings.empty() ? kExitOk : kExitWarnings;
+}
+
 // the search the user chose; all give the same results, at different speeds
 LocatorFactory MakeLocatorFactory(const std::string& name, const ContactOptions& options) {
   if (name == "neighbor_box") return MakeNeighborBoxLocatorFactory(options);
@@ -84,12 +101,15 @@ int RunCommand(const RunRequest& request, const std::function<int()>& interrupts
     PrintSummary(summary, scenario.units, out);
   }
   PrintOutputs(written, request.out_dir, request.quiet, out, err);
-  if (!finished || !written.not_written.empty()) {
+  if (!request.quiet || summary.status != RunStatus::kComplete)
+    err << "status: " << RunStatusName(summary.status) << (summary.warnings.empty() ? "" : ", with warnings:") << "\n";
+  PrintWarnings(summary, err);
+  if (summary.status == RunStatus::kInterrupted || !written.not_written.empty()) {
     err << "interrupted: " << written.written.size() << " files written, " << written.not_written.size()
         << " not written\n";
     return kExitInterrupted;
   }
-  return kExitOk;
+  return ExitCodeOf(summary);
 }
 
 }  // namespace dymesh::cli

@@ -32,7 +32,8 @@ thead th { border-bottom: 2px solid #bbbbbb; }
 .figures { display: flex; flex-wrap: wrap; gap: 18px; }
 figure { margin: 0; }
 figcaption { font-size: 12px; color: #555555; max-width: 600px; margin-top: 2px; }
-.banner { background: #fde2e1; border: 1px solid #e0a0a0; padding: 8px 12px; font-size: 14px; }
+.status { border: 1px solid #9ac59a; background: #e6f4e6; padding: 4px 12px; font-size: 14px; }
+.status-ended_in_contact, .status-interrupted, .status-failed_numerics { background: #fde2e1; border-color: #e0a0a0; }
 .note { font-size: 12px; color: #555555; max-width: 900px; }
 svg.plot { border: 1px solid #e6e6e6; }
 )";
@@ -147,7 +148,7 @@ std::string OverallTable(const Context& c) {
   const OutputUnits& u = c.units;
   auto one = [](const std::string& v) { return std::vector<std::string>{XmlEscape(v)}; };
   std::string t = "<table id=\"table-overall\">\n<thead><tr><th>run</th><th></th></tr></thead>\n";
-  t += Row("status", one(s.complete ? "complete" : "interrupted"));
+  t += Row("status", one(RunStatusName(s.status)));
   t += Row("time step [s] / end time [s] / steps", one(FormatFixed(c.sim.scenario().time_step, 6) + " / " +
                                                       FormatFixed(s.end_time, 4) + " / " + std::to_string(s.steps)));
   t += Row("contact [s]", one(s.contact_start < 0 ? "none" : FormatFixed(s.contact_start, 4) + " to " + FormatFixed(s.contact_end, 4)));
@@ -173,15 +174,33 @@ std::string OverallTable(const Context& c) {
   return t + "</table>\n";
 }
 
+// status and every warning, at the top: what to read before trusting anything below
+std::string StatusBanner(const Summary& summary) {
+  std::string s = "<div class=\"status status-" + std::string(RunStatusName(summary.status)) + "\" id=\"status\">";
+  s += "<p><b>status: " + std::string(RunStatusName(summary.status)) + "</b>";
+  if (summary.status == RunStatus::kInterrupted)
+    s += " at t = " + FormatFixed(summary.end_time, 4) + " s: everything below covers the run up to then only";
+  if (summary.status == RunStatus::kEndedInContact)
+    s += ": the bodies were still pushing on each other at t = " + FormatFixed(summary.end_time, 4) + " s";
+  if (summary.status == RunStatus::kFailedNumerics) s += ": the values below are not usable";
+  s += "</p>\n";
+  if (!summary.warnings.empty()) {
+    s += "<ul id=\"warnings\">\n";
+    for (const RunWarning& w : summary.warnings)
+      s += "<li><code>" + XmlEscape(w.code) + "</code> " + (w.field.empty() ? "" : XmlEscape(w.field) + ": ") +
+           XmlEscape(w.message) + "</li>\n";
+    s += "</ul>\n";
+  }
+  return s + "</div>\n";
+}
+
 // the header and the summary tables
 std::string SummarySection(const Context& c) {
   const Scenario& sc = c.sim.scenario();
   std::string s = "<h1>" + XmlEscape(sc.name.empty() ? "DyMESH run" : sc.name) + "</h1>\n";
   s += "<p class=\"meta\">scenario " + XmlEscape(sc.file) + "; units " + (sc.units == UnitSystem::kUS ? "US" : "SI") +
        "; accelerations in g; time in s</p>\n";
-  if (!c.summary.complete)
-    s += "<p class=\"banner\" id=\"interrupted\">Interrupted at t = " + FormatFixed(c.summary.end_time, 4) +
-         " s: everything below covers the run up to then only.</p>\n";
+  s += StatusBanner(c.summary);
   s += "<h2 id=\"summary\">Summary</h2>\n<table id=\"table-summary\">\n" + BodyTableHead(c) + "<tbody>\n";
   s += "<tr><th colspan=\"" + std::to_string(c.sim.engine().body_count() + 1) + "\">inputs</th></tr>\n" + InputRows(c);
   s += "<tr><th colspan=\"" + std::to_string(c.sim.engine().body_count() + 1) + "\">results</th></tr>\n" + ResultRows(c);

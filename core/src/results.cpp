@@ -11,6 +11,7 @@
 #include "dymesh/core/colour_map.h"
 #include "dymesh/core/mesh_import.h"
 #include "dymesh/core/report.h"
+#include "dymesh/core/run_assessment.h"
 #include "dymesh/core/svg_plot.h"
 #include "dymesh/core/units.h"
 
@@ -124,8 +125,10 @@ Summary Summarize(const Simulation& sim) {
   sum.contact_end = sim.last_contact_time();
   sum.steps = sim.steps();
   sum.end_time = sim.time();
-  sum.complete = sim.finished();
   sum.diagnostics = sim.diagnostics();
+  const RunAssessment assessment = AssessRun(sim, sum);
+  sum.status = assessment.status;
+  sum.warnings = assessment.warnings;
   return sum;
 }
 
@@ -159,7 +162,7 @@ nlohmann::json SummaryToJson(const Summary& s, UnitSystem system) {
   }
   const ContactDiagnostics& d = s.diagnostics;
   j["overall"] = {
-      {"status", s.complete ? "complete" : "interrupted"},
+      {"status", RunStatusName(s.status)},
       {"end_time_s", s.end_time},
       {"momentum_before", Vector(s.momentum_before, u.momentum)},
       {"momentum_after", Vector(s.momentum_after, u.momentum)},
@@ -177,6 +180,8 @@ nlohmann::json SummaryToJson(const Summary& s, UnitSystem system) {
       {"contact_end_s", s.contact_end},
       {"steps", s.steps},
   };
+  j["warnings"] = nlohmann::json::array();
+  for (const RunWarning& w : s.warnings) j["warnings"].push_back({{"code", w.code}, {"field", w.field}, {"message", w.message}});
   j["diagnostics"] = {{"candidates", d.candidates}, {"located", d.located}, {"touching", d.touching},
                       {"too_far_limited", d.too_far_limited}, {"max_crush_limited", d.max_crush_limited},
                       {"growth_limited", d.growth_limited}, {"pushback_reduced", d.reduced},

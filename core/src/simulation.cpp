@@ -46,6 +46,9 @@ Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<con
     initial.push_back(b.initial);
     rest_height_.push_back(b.initial.position.z());
   }
+  // refuse a step the host cannot integrate stably for the stiffest pair
+  guide_ = GuideTimeStep(scenario_, models);
+  RefuseUnstableStep(scenario_, guide_);
   engine_ = std::make_unique<ContactEngine>(std::move(models), initial, scenario_.contact, make_locator);
   Record(nullptr);
 }
@@ -64,16 +67,11 @@ bool Simulation::Advance() {
   // contact step at the current poses, then the rigid-body host integrates every body
   const StepResult step = engine_->Step(dt);
   bool in_contact = false;
-  for (int i = 0; i < engine_->body_count(); ++i) {
-    const BodyModel& model = engine_->model(i);
-    const MotionModel motion = scenario_.bodies[i].motion;
-    RigidState rigid = engine_->state(i).rigid;
-    const ExternalLoads extra = MotionModelLoads(motion, model, rigid, rest_height_[i]);
-    const CgLoads& loads = step.loads[i];
-    IntegrateRigidBody(model, motion, loads.force_earth + extra.force_earth, loads.moment_body + extra.moment_body,
-                       dt, &rigid);
-    engine_->SetRigidState(i, rigid);
-    in_contact = in_contact || loads.force_earth.squaredNorm() > 0.0;
+  if (!Integrate(step, dt, &in_contact)) {
+    // a non-finite pose or velocity: keep the last finite state and stop
+    failed_numerics_ = true;
+    finished_ = true;
+    return false;
   }
   // the energy ledger books the step's contact work on the motion just integrated
   engine_->AccountWork();
@@ -86,10 +84,31 @@ bool Simulation::Advance() {
   }
   Record(&step);
   // stop at the duration, or once contact has been over for the separation window
-  const bool separated = scenario_.stop_at_separation && last_contact_time_ >= 0.0 &&
-                         time_ - last_contact_time_ >= kSeparationWindow;
-  finished_ = time_ >= scenario_.duration - 0.5 * dt || separated;
+  separated_ = scenario_.stop_at_separation && last_contact_time_ >= 0.0 &&
+               time_ - last_contact_time_ >= kSeparationWindow;
+  finished_ = time_ >= scenario_.duration - 0.5 * dt || separated_;
   return !finished_;
+}
+
+bool Simulation::Integrate(const StepResult& step, double dt, bool* in_contact) {
+  // every body's new state first; none is set unless all are finite
+  std::vector<RigidState> next;
+  for (int i = 0; i < engine_->body_count(); ++i) {
+    const BodyModel& model = engine_->model(i);
+    const MotionModel motion = scenario_.bodies[i].motion;
+    RigidState rigid = engine_->state(i).rigid;
+    const ExternalLoads extra = MotionModelLoads(motion, model, rigid, rest_height_[i]);
+    const CgLoads& loads = step.loads[i];
+    IntegrateRigidBody(model, motion, loads.force_earth + extra.force_earth, loads.moment_body + extra.moment_body,
+                       dt, &rigid);
+    const bool finite = rigid.position.allFinite() && rigid.velocity.allFinite() && rigid.omega.allFinite() &&
+                        std::isfinite(rigid.roll + rigid.pitch + rigid.yaw) && loads.force_earth.allFinite();
+    if (!finite) return false;
+    next.push_back(rigid);
+    *in_contact = *in_contact || loads.force_earth.squaredNorm() > 0.0;
+  }
+  for (int i = 0; i < engine_->body_count(); ++i) engine_->SetRigidState(i, next[i]);
+  return true;
 }
 
 void Simulation::Record(const StepResult* step) {

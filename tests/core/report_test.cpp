@@ -46,18 +46,18 @@ TEST(Report, SelfContainedWellFormedWithEveryPlot) {
   // US units and the delta-V / PDOF annotation
   EXPECT_TRUE(Has(html, "delta-V [mph]"));
   EXPECT_TRUE(Has(html, "PDOF 0 deg (12 o'clock)"));
-  EXPECT_FALSE(Has(html, "id=\"interrupted\""));
+  EXPECT_FALSE(Has(html, "<b>status: interrupted</b>"));
 }
 
 TEST(Report, InterruptedRunSaysSoInSi) {
   Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
   s.units = UnitSystem::kSI;
   const FinishedRun run(s, 40);
-  ASSERT_FALSE(run.summary.complete);
+  ASSERT_EQ(run.summary.status, dymesh::RunStatus::kInterrupted);
   const std::string html = ReportHtml(run.sim, run.summary);
   EXPECT_EQ(testing::XmlWellFormedError(html), "");
-  EXPECT_TRUE(Has(html, "id=\"interrupted\""));
-  EXPECT_TRUE(Has(html, "Interrupted at t = 0.0200 s"));
+  EXPECT_TRUE(Has(html, "<b>status: interrupted</b>"));
+  EXPECT_TRUE(Has(html, "<b>status: interrupted</b> at t = 0.0200 s"));
   EXPECT_TRUE(Has(html, "delta-V [m/s]"));
   EXPECT_FALSE(Has(html, "mph"));
 }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dymesh/core/crush_profile.h"
+#include "dymesh/core/run_status.h"
 #include "dymesh/core/simulation.h"
 
 /// What a run reports: per-body delta-V, PDOF, pulse, crush and energy; overall balances.
@@ -57,7 +58,8 @@ struct Summary {
   double contact_start = -1.0, contact_end = -1.0;  ///< [s]
   int steps = 0;
   double end_time = 0.0;              ///< [s] time reached
-  bool complete = true;               ///< false when the run was stopped before its end (interrupted)
+  RunStatus status = RunStatus::kComplete;  ///< how the run ended (AssessRun)
+  std::vector<RunWarning> warnings;         ///< what a user must read before trusting the result
   ContactDiagnostics diagnostics;
 };
 

@@ -7,6 +7,7 @@
 
 #include "dymesh/core/options.h"
 #include "dymesh/core/rigid_body.h"
+#include "dymesh/core/run_status.h"
 #include "dymesh/core/stiffness.h"
 
 /// The scenario: what a user writes in JSON, converted to SI and validated at load.
@@ -64,6 +65,7 @@ struct Scenario {
   bool stop_at_separation = true;   ///< end once every pair has separated after contact
   ContactOptions contact;
   std::vector<BodySpec> bodies;
+  std::vector<RunWarning> warnings;  ///< implausible values and accepted oddities found at load
 };
 
 /// Reads and validates a scenario file; mesh paths are resolved against the file's folder.

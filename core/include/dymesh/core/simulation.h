@@ -5,6 +5,7 @@
 
 #include "dymesh/core/contact_step.h"
 #include "dymesh/core/scenario.h"
+#include "dymesh/core/time_step_guide.h"
 
 /// A self-contained run: bodies, contact engine, rigid-body host and recorded time history.
 namespace dymesh {
@@ -32,6 +33,8 @@ class Simulation {
 
   /// The same run on body models already built (one per scenario body, in order), e.g. shared
   /// between runs or prepared by the caller; the scenario's mesh sources are not read.
+  /// Throws InputError (field time.step) when the step is beyond the stable limit of the stiffest
+  /// pair (GuideTimeStep).
   Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
              const LocatorFactory& make_locator);
 
@@ -47,14 +50,25 @@ class Simulation {
   const std::vector<Sample>& history() const { return history_; }
   const ContactDiagnostics& diagnostics() const { return diagnostics_; }
   int steps() const { return steps_; }
-  /// True once the run reached its duration or separation (false while running or when stopped early).
+  /// True once the run reached its duration or separation, or failed (false while running or when
+  /// stopped early).
   bool finished() const { return finished_; }
+  /// True when the run stopped because a pose or velocity went non-finite; the state and history
+  /// are those of the last finite step.
+  bool failed_numerics() const { return failed_numerics_; }
+  /// True when the run ended on the separation rule (contact over for the separation window).
+  bool separated() const { return separated_; }
+  /// True when the last step carried a collision load.
+  bool in_contact_at_end() const { return steps_ > 0 && last_contact_time_ == time_; }
+  /// The contact period and step limits of the scenario's stiffest pair.
+  const TimeStepGuide& time_step_guide() const { return guide_; }
   double time() const { return time_; }
   double first_contact_time() const { return first_contact_time_; }
   double last_contact_time() const { return last_contact_time_; }
 
  private:
   void Record(const StepResult* step);
+  bool Integrate(const StepResult& step, double dt, bool* in_contact);
 
   Scenario scenario_;
   std::unique_ptr<ContactEngine> engine_;
@@ -64,7 +78,8 @@ class Simulation {
   int steps_ = 0;
   double time_ = 0.0;
   double first_contact_time_ = -1.0, last_contact_time_ = -1.0;
-  bool finished_ = false;
+  bool finished_ = false, failed_numerics_ = false, separated_ = false;
+  TimeStepGuide guide_;
 };
 
 /// Loads the meshes of a scenario and builds the body models (shared, immutable).

@@ -1,0 +1,112 @@
+#include "dymesh/core/run_assessment.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "dymesh/core/results.h"
+#include "dymesh/core/simulation.h"
+
+namespace dymesh {
+namespace {
+
+// printf into a std::string (warning texts)
+template <typename... Args>
+std::string Text(const char* format, Args... args) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, format, args...);
+  return buf;
+}
+
+// every number of the summary a reader relies on is finite
+bool SummaryFinite(const Summary& s) {
+  bool ok = std::isfinite(s.kinetic_before + s.kinetic_after + s.crush_energy + s.friction_energy + s.law_energy +
+                          s.energy_balance_error + s.closing_speed + s.separation_speed) &&
+            s.momentum_before.allFinite() && s.momentum_after.allFinite();
+  for (const BodySummary& b : s.bodies)
+    ok = ok && std::isfinite(b.delta_v + b.pdof_deg + b.peak_accel + b.average_accel + b.max_crush +
+                             b.max_dynamic_crush + b.crush_energy + b.friction_energy + b.law_energy +
+                             b.final_yaw_rate) &&
+         b.delta_v_earth.allFinite() && b.final_velocity.allFinite();
+  return ok;
+}
+
+// resultant collision force on all bodies in one recorded sample [N]
+double TotalLoad(const Sample& s) {
+  double f = 0.0;
+  for (const BodySample& b : s.bodies) f += b.loads.force_earth.norm();
+  return f;
+}
+
+// in contact at the end but at rest: every pair's relative speed small and the load not growing
+// over the last separation window
+bool AtRestInContact(const Simulation& sim) {
+  const auto& h = sim.history();
+  const int n = sim.engine().body_count();
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b)
+      if ((sim.engine().state(a).rigid.velocity - sim.engine().state(b).rigid.velocity).norm() > kRestSpeed)
+        return false;
+  const int window = std::max(1, static_cast<int>(0.02 / sim.scenario().time_step));
+  if (static_cast<int>(h.size()) <= window) return false;
+  return TotalLoad(h.back()) <= TotalLoad(h[h.size() - 1 - window]) * (1.0 + 1e-9);
+}
+
+RunStatus StatusOf(const Simulation& sim, const Summary& summary) {
+  if (sim.failed_numerics() || !SummaryFinite(summary)) return RunStatus::kFailedNumerics;
+  if (!sim.finished()) return RunStatus::kInterrupted;
+  if (sim.in_contact_at_end() && !AtRestInContact(sim)) return RunStatus::kEndedInContact;
+  return RunStatus::kComplete;
+}
+
+// warnings on how the run went (after the scenario's own)
+void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, std::vector<RunWarning>* w) {
+  const Scenario& sc = sim.scenario();
+  if (status == RunStatus::kFailedNumerics)
+    w->push_back({"non_finite", "", Text("a pose or velocity went non-finite at t = %.4f s; the results stop at the "
+                                         "last finite step and are not usable", s.end_time)});
+  if (s.contact_start < 0.0)
+    w->push_back({"no_contact", "", "the bodies never touched: check the initial positions, headings and speeds"});
+  if (sim.finished() && !sim.failed_numerics() && sc.stop_at_separation && !sim.separated() && s.contact_start >= 0.0)
+    w->push_back({"ran_to_duration", "time.duration",
+                  Text("the run reached its duration (%g s) before the bodies separated: results depend on the "
+                       "duration; lengthen time.duration", sc.duration)});
+  if (status == RunStatus::kComplete && sim.in_contact_at_end())
+    w->push_back({"at_rest_in_contact", "", "the bodies came to rest in contact; the contact force is not growing"});
+  if (std::abs(s.energy_balance_error) > kEnergyBalanceTolerance)
+    w->push_back({"energy_balance", "",
+                  Text("energy balance error %.2f %% exceeds %.0f %%: kinetic energy lost and contact work disagree",
+                       100.0 * s.energy_balance_error, 100.0 * kEnergyBalanceTolerance)});
+  const TimeStepGuide& g = sim.time_step_guide();
+  if (g.bounded && sc.time_step > g.recommended_step)
+    w->push_back({"time_step_coarse", "time.step",
+                  Text("step %g s resolves the contact period %.3g s of \"%s\" against \"%s\" with %.0f steps "
+                       "(fewer than %d); use at most %.3g s",
+                       sc.time_step, g.contact_period, sc.bodies[g.body_a].name.c_str(),
+                       sc.bodies[g.body_b].name.c_str(), g.contact_period / sc.time_step, kMinStepsPerContact,
+                       g.recommended_step)});
+  // crush deeper than the body is long: the mesh folded through itself
+  for (int i = 0; i < sim.engine().body_count(); ++i) {
+    const MeshStats m = ComputeStats(sim.engine().model(i).mesh);
+    const double length = (m.max - m.min).maxCoeff();
+    if (s.bodies[i].max_crush > length)
+      w->push_back({"crush_beyond_length", "bodies[" + std::to_string(i) + "]",
+                    Text("\"%s\": maximum crush %.3g m exceeds the body's largest extent %.3g m", s.bodies[i].name.c_str(),
+                         s.bodies[i].max_crush, length)});
+  }
+  if (s.diagnostics.non_finite > 0)
+    w->push_back({"non_finite_nodes", "",
+                  Text("%lld node updates were skipped as non-finite", s.diagnostics.non_finite)});
+}
+
+}  // namespace
+
+RunAssessment AssessRun(const Simulation& sim, const Summary& summary) {
+  RunAssessment a;
+  a.status = StatusOf(sim, summary);
+  a.warnings = sim.scenario().warnings;
+  AddRunWarnings(sim, summary, a.status, &a.warnings);
+  return a;
+}
+
+}  // namespace dymesh

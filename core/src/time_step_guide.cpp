@@ -1,0 +1,82 @@
+#include "dymesh/core/time_step_guide.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace dymesh {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// stiffest linear slope of a body's surfaces [N/m^3] (0 for a rigid body: it takes no crush)
+double SurfaceSlope(const BodyModel& model) {
+  if (model.rigid) return 0.0;
+  double slope = 0.0;
+  for (const Stiffness& k : model.stiffness) slope = std::max({slope, k.B, k.unload_slope});
+  return slope;
+}
+
+// area of a body's bounds box projected across the earth direction d [m^2]
+double ProjectedArea(const BodyModel& model, const RigidState& pose, const Vec3& d) {
+  const MeshStats s = ComputeStats(model.mesh);
+  const Vec3 size = s.max - s.min;
+  const Vec3 db = pose.Rotation().transpose() * d;
+  return size.y() * size.z() * std::abs(db.x()) + size.x() * size.z() * std::abs(db.y()) +
+         size.x() * size.y() * std::abs(db.z());
+}
+
+// direction the pair closes along: relative velocity, else the line between the CGs
+Vec3 ClosingDirection(const RigidState& a, const RigidState& b) {
+  const Vec3 v = a.velocity - b.velocity;
+  if (v.norm() > 0.0) return v.normalized();
+  const Vec3 r = b.position - a.position;
+  return r.norm() > 0.0 ? r.normalized() : Vec3(1, 0, 0);
+}
+
+// 1 / m of a body for the pair's reduced mass (0 for a fixed body)
+double InverseMass(const Scenario& scenario, const BodyModel& model, int i) {
+  return scenario.bodies[i].motion == MotionModel::kFixed ? 0.0 : 1.0 / model.mass;
+}
+
+}  // namespace
+
+TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::shared_ptr<const BodyModel>>& models) {
+  TimeStepGuide guide;
+  double best_omega = 0.0;
+  for (int a = 0; a < static_cast<int>(models.size()); ++a)
+    for (int b = a + 1; b < static_cast<int>(models.size()); ++b) {
+      // the two bodies' surfaces in series over the smaller projected area
+      const double slope_a = SurfaceSlope(*models[a]), slope_b = SurfaceSlope(*models[b]);
+      if (slope_a == 0.0 && slope_b == 0.0) continue;
+      const double compliance = (slope_a > 0.0 ? 1.0 / slope_a : 0.0) + (slope_b > 0.0 ? 1.0 / slope_b : 0.0);
+      const RigidState& pa = scenario.bodies[a].initial;
+      const RigidState& pb = scenario.bodies[b].initial;
+      const Vec3 d = ClosingDirection(pa, pb);
+      const double area = std::min(ProjectedArea(*models[a], pa, d), ProjectedArea(*models[b], pb, d));
+      const double k = area / compliance;
+      // reduced mass; two fixed bodies never move relative to each other
+      const double inverse_mass = InverseMass(scenario, *models[a], a) + InverseMass(scenario, *models[b], b);
+      if (!(inverse_mass > 0.0) || !(k > 0.0)) continue;
+      const double omega = std::sqrt(k * inverse_mass);
+      if (omega <= best_omega) continue;
+      best_omega = omega;
+      guide = TimeStepGuide{true, a, b, k, 1.0 / inverse_mass, kPi / omega, kPi / omega / kMinStepsPerContact,
+                            2.0 / omega};
+    }
+  return guide;
+}
+
+void RefuseUnstableStep(const Scenario& scenario, const TimeStepGuide& guide) {
+  if (!guide.bounded || scenario.time_step <= guide.stable_limit) return;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "step %g s is beyond the stable limit %.3g s of \"%s\" against \"%s\" (contact period %.3g s): the "
+                "integration would diverge; use at most %.3g s (recommended %.3g s)",
+                scenario.time_step, guide.stable_limit, scenario.bodies[guide.body_a].name.c_str(),
+                scenario.bodies[guide.body_b].name.c_str(), guide.contact_period, guide.stable_limit,
+                guide.recommended_step);
+  throw InputError(scenario.file, "time.step", text);
+}
+
+}  // namespace dymesh
