@@ -70,8 +70,12 @@ int CheckCommand(const std::string& scenario_path, std::ostream& out) {
                   guide.recommended_step, guide.stable_limit,
                   scenario.time_step > guide.recommended_step ? "; warning: the step is coarser than recommended" : "");
   for (int i = 0; i < static_cast<int>(models.size()); ++i) PrintBody(scenario, i, *models[i], out);
-  out << "ok: scenario and " << models.size() << " meshes are valid\n";
-  return kExitOk;
+  // what the scenario asks that is possible but implausible
+  for (const RunWarning& w : scenario.warnings)
+    out << "warning [" << w.code << "] " << (w.field.empty() ? "" : w.field + ": ") << w.message << "\n";
+  out << "ok: scenario and " << models.size() << " meshes are valid" << (scenario.warnings.empty() ? "" : ", with warnings")
+      << "\n";
+  return scenario.warnings.empty() ? kExitOk : kExitWarnings;
 }
 
 }  // namespace dymesh::cli

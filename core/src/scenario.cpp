@@ -64,6 +64,7 @@ struct Source {
   std::string file;
   fs::path dir;
   UnitScale units;
+  std::vector<RunWarning>* warnings = nullptr;  // the scenario's: implausible values land here
 };
 
 [[noreturn]] void Fail(const Source& src, const std::string& field, const std::string& message) {
@@ -335,6 +336,59 @@ Vec3 ReadVec3(const Source& src, const Json& j, const std::string& path, const R
   return v;
 }
 
+// ---------------------------------------------------------------------------------------------
+// physical ranges (README "Physical ranges"): beyond the hard bounds a value is impossible and
+// refused; beyond the plausible ones it is accepted with a warning naming the field. Bounds are
+// SI; messages show them in the file's units.
+
+struct PhysicalRange {
+  double hard_lo, hard_hi, lo, hi;
+  const char* what;  // the quantity, for messages
+};
+
+// a unit of the file for messages: SI per unit and its name
+struct InputUnit {
+  double per_unit;
+  const char* name;
+};
+
+InputUnit SpeedUnit(const Source& src) { return src.units.us ? InputUnit{units::kMph, "mph"} : InputUnit{1.0, "m/s"}; }
+InputUnit LengthUnit(const Source& src) { return src.units.us ? InputUnit{units::kInch, "in"} : InputUnit{1.0, "m"}; }
+InputUnit MassUnit(const Source& src) { return src.units.us ? InputUnit{units::kPoundMass, "lb"} : InputUnit{1.0, "kg"}; }
+constexpr InputUnit kPlain{1.0, ""};
+
+std::string InUnits(double si, InputUnit u) {
+  return FormatDouble(si / u.per_unit) + (u.name[0] != '\0' ? std::string(" ") + u.name : std::string());
+}
+
+// refuses an impossible value, warns on an implausible one; `si` is the converted value
+void CheckPhysical(const Source& src, const std::string& field, double si, const PhysicalRange& r, InputUnit u) {
+  if (si < r.hard_lo || si > r.hard_hi)
+    Fail(src, field, std::string("expected a physically possible ") + r.what + " in " + InUnits(r.hard_lo, u) +
+                         " .. " + InUnits(r.hard_hi, u) + ", got " + InUnits(si, u));
+  if ((si < r.lo || si > r.hi) && src.warnings != nullptr)
+    src.warnings->push_back({"implausible_value", field,
+                             std::string(r.what) + " " + InUnits(si, u) + " is outside the range met in vehicle "
+                             "collisions, " + InUnits(r.lo, u) + " .. " + InUnits(r.hi, u) + ": check the value and its unit"});
+}
+
+constexpr double kSpeedOfSound = 343.0;  // [m/s]
+constexpr PhysicalRange kSpeedRange{-kSpeedOfSound, kSpeedOfSound, -67.0, 67.0, "speed"};  // plausible: 150 mph
+constexpr PhysicalRange kYawRateRange{-36000.0, 36000.0, -720.0, 720.0, "yaw rate [deg/s]"};
+constexpr PhysicalRange kHeadingRange{-720.0, 720.0, -360.0, 360.0, "heading [deg]"};
+constexpr PhysicalRange kTiltRange{-180.0, 180.0, -45.0, 45.0, "roll or pitch [deg]"};
+constexpr PhysicalRange kMassRange{1.0, 1e7, 50.0, 60000.0, "mass"};
+constexpr PhysicalRange kPositionRange{-1e5, 1e5, -1e4, 1e4, "position coordinate"};  // [m]
+constexpr PhysicalRange kCgRange{-100.0, 100.0, -20.0, 20.0, "CG coordinate"};        // [m] from the mesh origin
+constexpr PhysicalRange kBoxRange{1e-3, 1000.0, 0.01, 30.0, "box size"};              // [m]
+constexpr PhysicalRange kGyrationRange{0.01, 100.0, 0.1, 15.0, "radius of gyration sqrt(inertia / mass)"};  // [m]
+constexpr PhysicalRange kFrictionRange{0.0, 10.0, 0.0, 1.5, "friction coefficient"};
+constexpr PhysicalRange kDurationRange{0.0, 1e4, 0.0, 10.0, "duration [s]"};
+// 3-D stiffness (SI): published A up to ~1000 lb/in and B up to ~1000 lb/in^2 over a 30 in
+// conversion height are ~2.3e5 N/m^2 and ~9e6 N/m^3; rigid-wall stand-ins go higher
+constexpr PhysicalRange kStiffnessARange{0.0, 1e15, 0.0, 1e7, "3-D stiffness A [N/m^2]"};
+constexpr PhysicalRange kStiffnessBRange{0.0, 1e15, 0.0, 1e9, "3-D stiffness B [N/m^3]"};
+
 // a relative path resolved against the folder of the file that names it, made absolute
 std::string ResolvePath(const Source& src, const std::string& name) {
   fs::path p(name);
@@ -367,6 +421,10 @@ void ParseTime(const Source& src, const Json& j, const std::string& path, Scenar
   // step and duration in seconds in both unit systems
   s->time_step = ReadNumber(src, Require(src, j, path, "step"), Join(path, "step"), kPositive);
   s->duration = ReadNumber(src, Require(src, j, path, "duration"), Join(path, "duration"), kPositive);
+  CheckPhysical(src, Join(path, "duration"), s->duration, kDurationRange, kPlain);
+  if (s->time_step > s->duration)
+    Fail(src, Join(path, "step"), "expected a step no longer than time.duration (" + FormatDouble(s->duration) +
+                                      " s), got " + FormatDouble(s->time_step) + " s");
   if (s->duration / s->time_step > kMaxSteps)
     Fail(src, Join(path, "duration"),
          "expected at most 1e7 steps (duration / step), got " + FormatDouble(s->duration / s->time_step));
@@ -458,8 +516,10 @@ void ParseBox(const Source& src, const Json& j, const std::string& path, MeshSou
   CheckKeys(src, j, path, {"length", "width", "height", "segments"});
   // sizes in the file's length unit
   const char* keys[3] = {"length", "width", "height"};
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
     mesh->box_size[i] = ReadNumber(src, Require(src, j, path, keys[i]), Join(path, keys[i]), kPositive) * src.units.length;
+    CheckPhysical(src, Join(path, keys[i]), mesh->box_size[i], kBoxRange, LengthUnit(src));
+  }
   // grid segments along x, y, z
   if (const Json* v = Find(j, "segments")) {
     const std::string field = Join(path, "segments");
@@ -542,6 +602,8 @@ Stiffness ParseSurfaceStiffness(const Source& src, const Json& j, const std::str
     k.C = number("C3", kAnyFinite, u.StiffnessPow(4));
     k.D = number("D3", kAnyFinite, u.StiffnessPow(5));
   }
+  CheckPhysical(src, Join(path, has_2d ? "A" : "A3"), k.A, kStiffnessARange, kPlain);
+  CheckPhysical(src, Join(path, has_2d ? "B" : "B3"), k.B, kStiffnessBRange, kPlain);
   // saturation, maximum crush and unloading slope
   k.sat_crush = number("sat_crush", kNonNegative, u.length);
   k.max_crush = number("max_crush", kNonNegative, u.length);
@@ -597,12 +659,19 @@ BodyFields ParseBodyFields(const Source& src, const Json& j, const std::string& 
   if (mass != nullptr && weight != nullptr) Fail(src, Join(path, "weight"), "give either mass or weight, not both");
   if (mass != nullptr) b.mass = ReadNumber(src, *mass, Join(path, "mass"), kPositive) * u.mass;
   if (weight != nullptr) b.mass = ReadNumber(src, *weight, Join(path, "weight"), kPositive) * u.weight;
+  if (b.mass) CheckPhysical(src, Join(path, mass != nullptr ? "mass" : "weight"), *b.mass, kMassRange, MassUnit(src));
   // mass properties
-  if (const Json* v = Find(j, "cg")) b.cg = ReadVec3(src, *v, Join(path, "cg"), kAnyFinite) * u.length;
+  if (const Json* v = Find(j, "cg")) {
+    b.cg = ReadVec3(src, *v, Join(path, "cg"), kAnyFinite) * u.length;
+    for (int i = 0; i < 3; ++i) CheckPhysical(src, At(Join(path, "cg"), i), (*b.cg)[i], kCgRange, LengthUnit(src));
+  }
   if (const Json* v = Find(j, "inertia")) b.inertia = ReadVec3(src, *v, Join(path, "inertia"), kPositive) * u.inertia;
   // contact properties
   if (const Json* v = Find(j, "restitution")) b.restitution = ReadNumber(src, *v, Join(path, "restitution"), kUnitInterval);
-  if (const Json* v = Find(j, "friction")) b.friction = ReadNumber(src, *v, Join(path, "friction"), kNonNegative);
+  if (const Json* v = Find(j, "friction")) {
+    b.friction = ReadNumber(src, *v, Join(path, "friction"), kNonNegative);
+    CheckPhysical(src, Join(path, "friction"), *b.friction, kFrictionRange, kPlain);
+  }
   if (const Json* v = Find(j, "rigid")) b.rigid = ReadBool(src, *v, Join(path, "rigid"));
   if (const Json* v = Find(j, "motion"))
     b.motion = ReadChoice<MotionModel>(src, *v, Join(path, "motion"),
@@ -638,7 +707,7 @@ BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string&
   const std::string text = ReadTextFile(file, &ok);
   if (!ok) Fail(scenario, path, "cannot open vehicle file: " + file);
   const Json root = ParseJson(text, file);
-  Source src{file, fs::path(file).parent_path(), {}};
+  Source src{file, fs::path(file).parent_path(), {}, scenario.warnings};
   ExpectObject(src, root, "");
   CheckKeys(src, root, "", kVehicleKeys);
   src.units = ScaleFor(ReadUnits(src, Require(src, root, "", "units"), "units"));
@@ -652,25 +721,34 @@ RigidState ParseInitial(const Source& src, const Json& j, const std::string& pat
   const auto& u = src.units;
   RigidState r;
   r.position = ReadVec3(src, Require(src, j, path, "position"), Join(path, "position"), kAnyFinite) * u.length;
+  for (int i = 0; i < 3; ++i)
+    CheckPhysical(src, At(Join(path, "position"), i), r.position[i], kPositionRange, LengthUnit(src));
   // Euler angles in degrees
-  auto angle = [&](const char* key) {
+  auto angle = [&](const char* key, const PhysicalRange& range) {
     const Json* v = Find(j, key);
-    return v == nullptr ? 0.0 : ReadNumber(src, *v, Join(path, key), kAnyFinite) * units::kDegree;
+    if (v == nullptr) return 0.0;
+    const double degrees = ReadNumber(src, *v, Join(path, key), kAnyFinite);
+    CheckPhysical(src, Join(path, key), degrees, range, kPlain);
+    return degrees * units::kDegree;
   };
-  r.yaw = angle("heading");
-  r.roll = angle("roll");
-  r.pitch = angle("pitch");
+  r.yaw = angle("heading", kHeadingRange);
+  r.roll = angle("roll", kTiltRange);
+  r.pitch = angle("pitch", kTiltRange);
   // velocity vector, or speed along the heading
   const Json* velocity = Find(j, "velocity");
   const Json* speed = Find(j, "speed");
   if (velocity != nullptr && speed != nullptr) Fail(src, Join(path, "speed"), "give either velocity or speed, not both");
-  if (velocity != nullptr) r.velocity = ReadVec3(src, *velocity, Join(path, "velocity"), kAnyFinite) * u.speed;
+  if (velocity != nullptr) {
+    r.velocity = ReadVec3(src, *velocity, Join(path, "velocity"), kAnyFinite) * u.speed;
+    CheckPhysical(src, Join(path, "velocity"), r.velocity.norm(), kSpeedRange, SpeedUnit(src));
+  }
   if (speed != nullptr) {
     const double v = ReadNumber(src, *speed, Join(path, "speed"), kAnyFinite) * u.speed;
+    CheckPhysical(src, Join(path, "speed"), v, kSpeedRange, SpeedUnit(src));
     r.velocity = Vec3(v * std::cos(r.yaw), v * std::sin(r.yaw), 0.0);
   }
   // yaw rate to body rates (p, q, r) with zero roll and pitch rates
-  const double psi_dot = angle("yaw_rate");
+  const double psi_dot = angle("yaw_rate", kYawRateRange);
   r.omega = Vec3(-std::sin(r.pitch), std::sin(r.roll) * std::cos(r.pitch), std::cos(r.roll) * std::cos(r.pitch)) * psi_dot;
   return r;
 }
@@ -702,6 +780,11 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   body.mass = fields.mass.value_or(0.0);
   body.cg = fields.cg;
   body.inertia_diagonal = fields.inertia;
+  // inertia through its radius of gyration sqrt(I / m), which must fit the body's scale
+  if (fields.inertia && fields.mass)
+    for (int i = 0; i < 3; ++i)
+      CheckPhysical(src, At(Join(path, "inertia"), i), std::sqrt((*fields.inertia)[i] / *fields.mass),
+                    kGyrationRange, LengthUnit(src));
   body.restitution = fields.restitution.value_or(0.0);
   body.friction = fields.friction.value_or(0.0);
   body.rigid = fields.rigid.value_or(false);
@@ -717,14 +800,28 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   return body;
 }
 
+// refuses a scenario where nothing can crush; warns of rigid pairs (they pass through each other)
+void CheckRigidBodies(const Source& src, Scenario* s) {
+  const auto rigid = [](const BodySpec& b) { return b.rigid; };
+  if (std::all_of(s->bodies.begin(), s->bodies.end(), rigid))
+    Fail(src, "bodies", "every body is rigid: at least one must be deformable (rigid bodies take no crush, so rigid "
+                        "pairs have no contact force and pass through each other)");
+  for (std::size_t a = 0; a < s->bodies.size(); ++a)
+    for (std::size_t b = a + 1; b < s->bodies.size(); ++b)
+      if (s->bodies[a].rigid && s->bodies[b].rigid)
+        s->warnings.push_back({"rigid_pair", At("bodies", b) + ".rigid",
+                               "\"" + s->bodies[a].name + "\" and \"" + s->bodies[b].name +
+                                   "\" are both rigid: no contact force acts between them, they pass through each other"});
+}
+
 }  // namespace
 
 Scenario ParseScenario(const std::string& json_text, const std::string& file) {
   const Json root = ParseJson(json_text, file);
-  Source src{file, FolderOf(file), {}};
+  Scenario s;
+  Source src{file, FolderOf(file), {}, &s.warnings};
   ExpectObject(src, root, "");
   CheckKeys(src, root, "", {"name", "units", "time", "contact", "bodies"});
-  Scenario s;
   s.file = file;
   // units first: every other number depends on them
   s.units = ReadUnits(src, Require(src, root, "", "units"), "units");
@@ -742,6 +839,7 @@ Scenario ParseScenario(const std::string& json_text, const std::string& file) {
       if (earlier.name == body.name) Fail(src, Join(At("bodies", i), "name"), "duplicate body name \"" + body.name + "\"");
     s.bodies.push_back(std::move(body));
   }
+  CheckRigidBodies(src, &s);
   return s;
 }
 
