@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "format.h"
+#include "placement_text.h"
 #include "dymesh/core/mesh.h"
 #include "dymesh/core/results.h"
 #include "dymesh/core/scenario.h"
@@ -55,8 +56,9 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, std::ost
 
 int CheckCommand(const std::string& scenario_path, std::ostream& out) {
   // parse (every field checked), then load and clean every mesh
-  const Scenario scenario = LoadScenario(scenario_path);
+  Scenario scenario = LoadScenario(scenario_path);
   const auto models = BuildBodyModels(scenario);
+  const std::vector<PairPlacement> placements = PlaceBodies(&scenario, models);
   out << scenario.file << ": " << scenario.name << "\n";
   out << Format("  units %s; time step %g s, duration %g s (%d steps)%s\n", scenario.units == UnitSystem::kUS ? "US" : "SI",
                 scenario.time_step, scenario.duration, static_cast<int>(scenario.duration / scenario.time_step + 0.5),
@@ -70,6 +72,7 @@ int CheckCommand(const std::string& scenario_path, std::ostream& out) {
                   guide.recommended_step, guide.stable_limit,
                   scenario.time_step > guide.recommended_step ? "; warning: the step is coarser than recommended" : "");
   for (int i = 0; i < static_cast<int>(models.size()); ++i) PrintBody(scenario, i, *models[i], out);
+  for (const PairPlacement& p : placements) out << PlacementText(scenario, p);
   // what the scenario asks that is possible but implausible
   for (const RunWarning& w : scenario.warnings)
     out << "warning [" << w.code << "] " << (w.field.empty() ? "" : w.field + ": ") << w.message << "\n";

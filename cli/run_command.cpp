@@ -15,6 +15,7 @@
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/core/units.h"
+#include "placement_text.h"
 #include "progress.h"
 
 namespace dymesh::cli {
@@ -98,6 +99,7 @@ int RunCommand(const RunRequest& request, const std::function<int()>& interrupts
   const WrittenOutputs written = WriteOutputs(sim, summary, request.out_dir, [&] { return interrupts() > stops; });
   if (!request.quiet) {
     out << scenario.file << ": " << scenario.name << (finished ? "" : " (interrupted)") << "\n";
+    for (const PairPlacement& p : sim.placements()) out << PlacementText(sim.scenario(), p);
     PrintSummary(summary, scenario.units, out);
   }
   PrintOutputs(written, request.out_dir, request.quiet, out, err);

@@ -292,3 +292,39 @@ int RemoveDegenerateTriangles(TriMesh* mesh) {
 }
 
 }  // namespace dymesh
+
+namespace dymesh {
+
+TriMesh MakeCylinder(double radius, double height, int segments) {
+  if (!(radius > 0.0) || !(height > 0.0) || !std::isfinite(radius) || !std::isfinite(height))
+    throw std::invalid_argument("MakeCylinder: radius and height must be finite and > 0");
+  if (segments < 3) throw std::invalid_argument("MakeCylinder: at least 3 segments");
+  // rings of the side: rows about as tall as a facet is wide
+  const double facet = 2.0 * radius * std::sin(3.14159265358979323846 / segments);
+  const int rows = std::max(1, static_cast<int>(std::lround(height / facet)));
+  TriMesh mesh;
+  for (int r = 0; r <= rows; ++r)
+    for (int k = 0; k < segments; ++k) {
+      const double angle = 2.0 * 3.14159265358979323846 * k / segments;
+      mesh.vertices.emplace_back(radius * std::cos(angle), radius * std::sin(angle), -0.5 * height + height * r / rows);
+    }
+  auto id = [&](int r, int k) { return r * segments + (k % segments); };
+  // side quads as two triangles, outward
+  for (int r = 0; r < rows; ++r)
+    for (int k = 0; k < segments; ++k) {
+      mesh.triangles.push_back({id(r, k), id(r + 1, k), id(r, k + 1)});
+      mesh.triangles.push_back({id(r, k + 1), id(r + 1, k), id(r + 1, k + 1)});
+    }
+  // caps: fans about centre vertices (bottom z = -h/2 faces -z, top faces +z)
+  const int bottom = static_cast<int>(mesh.vertices.size());
+  mesh.vertices.emplace_back(0.0, 0.0, -0.5 * height);
+  mesh.vertices.emplace_back(0.0, 0.0, 0.5 * height);
+  for (int k = 0; k < segments; ++k) {
+    mesh.triangles.push_back({bottom, id(0, k), id(0, k + 1)});
+    mesh.triangles.push_back({bottom + 1, id(rows, k + 1), id(rows, k)});
+  }
+  if (SignedVolume(mesh) < 0.0) FlipWinding(&mesh);
+  return mesh;
+}
+
+}  // namespace dymesh

@@ -114,7 +114,9 @@ TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
 TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
   // a generated box is already in body axes and metres
   TriMesh mesh;
-  if (source.box) {
+  if (source.cylinder) {
+    mesh = MakeCylinder(source.cylinder_radius, source.cylinder_height, source.cylinder_segments);
+  } else if (source.box) {
     const Vec3& s = source.box_size;
     if (!(s.minCoeff() > 0.0) || !s.allFinite())
       throw InputError(scenario_file, field + ".box", "box sizes must be finite and > 0");

@@ -530,13 +530,33 @@ void ParseBox(const Source& src, const Json& j, const std::string& path, MeshSou
   mesh->box = true;
 }
 
+// "cylinder": an upright pole of radius and height, facets around
+void ParseCylinder(const Source& src, const Json& j, const std::string& path, MeshSource* mesh) {
+  ExpectObject(src, j, path);
+  CheckKeys(src, j, path, {"radius", "height", "segments"});
+  mesh->cylinder_radius = ReadNumber(src, Require(src, j, path, "radius"), Join(path, "radius"), kPositive) * src.units.length;
+  mesh->cylinder_height = ReadNumber(src, Require(src, j, path, "height"), Join(path, "height"), kPositive) * src.units.length;
+  CheckPhysical(src, Join(path, "radius"), mesh->cylinder_radius, kBoxRange, LengthUnit(src));
+  CheckPhysical(src, Join(path, "height"), mesh->cylinder_height, kBoxRange, LengthUnit(src));
+  if (const Json* v = Find(j, "segments"))
+    mesh->cylinder_segments = ReadInt(src, *v, Join(path, "segments"), 8, 4096, "expected an integer in 8..4096");
+  mesh->cylinder = true;
+}
+
 // "mesh": a file (unit, scale, axes, fit) or a generated box, plus subdivisions
 MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) {
   ExpectObject(src, j, path);
-  CheckKeys(src, j, path, {"file", "unit", "scale", "axes", "fit_length", "subdivisions", "box"});
+  CheckKeys(src, j, path, {"file", "unit", "scale", "axes", "fit_length", "subdivisions", "box", "cylinder"});
   MeshSource mesh;
   if (const Json* v = Find(j, "subdivisions"))
     mesh.subdivisions = ReadInt(src, *v, Join(path, "subdivisions"), 0, 6, "expected an integer in 0..6");
+  // a generated cylinder takes no file or box options
+  if (const Json* cylinder = Find(j, "cylinder")) {
+    for (const char* key : {"file", "unit", "scale", "axes", "fit_length", "box"})
+      if (Find(j, key) != nullptr) Fail(src, Join(path, key), "not allowed together with \"cylinder\"");
+    ParseCylinder(src, *cylinder, Join(path, "cylinder"), &mesh);
+    return mesh;
+  }
   // a generated box takes no file options
   if (const Json* box = Find(j, "box")) {
     for (const char* key : {"file", "unit", "scale", "axes", "fit_length"})
@@ -546,7 +566,7 @@ MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) 
   }
   // a mesh file: must exist now, stored absolute
   const Json* file = Find(j, "file");
-  if (file == nullptr) Fail(src, Join(path, "file"), "missing required key: give \"file\" or \"box\"");
+  if (file == nullptr) Fail(src, Join(path, "file"), "missing required key: give \"file\", \"box\" or \"cylinder\"");
   const std::string field = Join(path, "file");
   const std::string name = ReadString(src, *file, field);
   if (name.empty()) Fail(src, field, "expected a file name, got \"\"");
@@ -717,7 +737,7 @@ BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string&
 // initial pose and velocities (earth frame, SAE)
 RigidState ParseInitial(const Source& src, const Json& j, const std::string& path) {
   ExpectObject(src, j, path);
-  CheckKeys(src, j, path, {"position", "heading", "roll", "pitch", "velocity", "speed", "yaw_rate"});
+  CheckKeys(src, j, path, {"position", "heading", "roll", "pitch", "velocity", "speed", "yaw_rate", "place_at_contact"});
   const auto& u = src.units;
   RigidState r;
   r.position = ReadVec3(src, Require(src, j, path, "position"), Join(path, "position"), kAnyFinite) * u.length;
@@ -750,6 +770,24 @@ RigidState ParseInitial(const Source& src, const Json& j, const std::string& pat
   // yaw rate to body rates (p, q, r) with zero roll and pitch rates
   const double psi_dot = angle("yaw_rate", kYawRateRange);
   r.omega = Vec3(-std::sin(r.pitch), std::sin(r.roll) * std::cos(r.pitch), std::cos(r.roll) * std::cos(r.pitch)) * psi_dot;
+  return r;
+}
+
+// "place_at_contact": {"with": NAME, "gap": G}; the name is resolved once every body is read
+struct PlacementRequest {
+  std::string with;
+  double gap = 0.0;
+};
+
+std::optional<PlacementRequest> ParsePlaceAtContact(const Source& src, const Json& initial, const std::string& path) {
+  const Json* j = Find(initial, "place_at_contact");
+  if (j == nullptr) return std::nullopt;
+  const std::string field = Join(path, "place_at_contact");
+  ExpectObject(src, *j, field);
+  CheckKeys(src, *j, field, {"with", "gap"});
+  PlacementRequest r;
+  r.with = ReadString(src, Require(src, *j, field, "with"), Join(field, "with"));
+  if (const Json* v = Find(*j, "gap")) r.gap = ReadNumber(src, *v, Join(field, "gap"), kNonNegative) * src.units.length;
   return r;
 }
 
@@ -800,6 +838,20 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   return body;
 }
 
+// each place_at_contact names another body of the scenario
+void ResolvePlacements(const Source& src, const std::vector<std::optional<PlacementRequest>>& requests, Scenario* s) {
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    if (!requests[i]) continue;
+    const std::string field = Join(Join(At("bodies", i), "initial"), "place_at_contact.with");
+    int with = -1;
+    for (std::size_t k = 0; k < s->bodies.size(); ++k)
+      if (s->bodies[k].name == requests[i]->with) with = static_cast<int>(k);
+    if (with < 0) Fail(src, field, "expected the name of another body, got \"" + requests[i]->with + "\"");
+    if (with == static_cast<int>(i)) Fail(src, field, "expected another body's name, got this body's own");
+    s->bodies[i].place_at_contact = BodySpec::PlaceAtContact{with, requests[i]->gap};
+  }
+}
+
 // refuses a scenario where nothing can crush; warns of rigid pairs (they pass through each other)
 void CheckRigidBodies(const Source& src, Scenario* s) {
   const auto rigid = [](const BodySpec& b) { return b.rigid; };
@@ -821,7 +873,7 @@ Scenario ParseScenario(const std::string& json_text, const std::string& file) {
   Scenario s;
   Source src{file, FolderOf(file), {}, &s.warnings};
   ExpectObject(src, root, "");
-  CheckKeys(src, root, "", {"name", "units", "time", "contact", "bodies"});
+  CheckKeys(src, root, "", {"name", "units", "time", "contact", "bodies", "allow_initial_overlap"});
   s.file = file;
   // units first: every other number depends on them
   s.units = ReadUnits(src, Require(src, root, "", "units"), "units");
@@ -829,16 +881,20 @@ Scenario ParseScenario(const std::string& json_text, const std::string& file) {
   if (const Json* v = Find(root, "name")) s.name = ReadString(src, *v, "name");
   ParseTime(src, Require(src, root, "", "time"), "time", &s);
   if (const Json* v = Find(root, "contact")) ParseContact(src, *v, "contact", &s.contact);
+  if (const Json* v = Find(root, "allow_initial_overlap")) s.allow_initial_overlap = ReadBool(src, *v, "allow_initial_overlap");
   // bodies: at least two, unique names
   const Json& bodies = Require(src, root, "", "bodies");
   if (!bodies.is_array() || bodies.size() < 2)
     Fail(src, "bodies", "expected an array of at least 2 bodies, got " + Describe(bodies));
+  std::vector<std::optional<PlacementRequest>> placements;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     BodySpec body = ParseBody(src, bodies[i], At("bodies", i));
     for (const BodySpec& earlier : s.bodies)
       if (earlier.name == body.name) Fail(src, Join(At("bodies", i), "name"), "duplicate body name \"" + body.name + "\"");
     s.bodies.push_back(std::move(body));
+    placements.push_back(ParsePlaceAtContact(src, bodies[i]["initial"], Join(At("bodies", i), "initial")));
   }
+  ResolvePlacements(src, placements, &s);
   CheckRigidBodies(src, &s);
   return s;
 }

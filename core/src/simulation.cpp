@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dymesh/core/mesh_import.h"
+#include "dymesh/core/placement.h"
 
 namespace dymesh {
 namespace {
@@ -41,6 +42,8 @@ Simulation::Simulation(const Scenario& scenario, const LocatorFactory& make_loca
 Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
                        const LocatorFactory& make_locator)
     : scenario_(scenario) {
+  // bodies placed at contact; an initial overlap refused or warned
+  placements_ = PlaceBodies(&scenario_, models);
   std::vector<RigidState> initial;
   for (const BodySpec& b : scenario_.bodies) {
     initial.push_back(b.initial);

@@ -37,6 +37,9 @@ struct MeshSource {
   bool box = false;
   Vec3 box_size{0, 0, 0};           ///< [m] length, width, height
   std::array<int, 3> box_segments{1, 1, 1};
+  bool cylinder = false;            ///< a generated upright cylinder (poles, trees)
+  double cylinder_radius = 0.0, cylinder_height = 0.0;  ///< [m]
+  int cylinder_segments = 32;       ///< facets around
   int subdivisions = 0;             ///< 1-to-4 subdivisions applied after loading
 };
 
@@ -53,6 +56,12 @@ struct BodySpec {
   bool rigid = false;
   MotionModel motion = MotionModel::kPlanar;
   RigidState initial;               ///< earth-frame pose and velocities at t = 0
+  /// Moved at load along its velocity relative to body `with` until `gap` [m] remains (PlaceBodies).
+  struct PlaceAtContact {
+    int with = -1;
+    double gap = 0.0;
+  };
+  std::optional<PlaceAtContact> place_at_contact;
 };
 
 /// A whole run.
@@ -63,6 +72,7 @@ struct Scenario {
   double time_step = 0.0005;        ///< [s]
   double duration = 0.25;           ///< [s]
   bool stop_at_separation = true;   ///< end once every pair has separated after contact
+  bool allow_initial_overlap = false;  ///< accept bodies overlapping at t = 0 (with a warning)
   ContactOptions contact;
   std::vector<BodySpec> bodies;
   std::vector<RunWarning> warnings;  ///< implausible values and accepted oddities found at load

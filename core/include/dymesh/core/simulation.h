@@ -5,6 +5,7 @@
 
 #include "dymesh/core/contact_step.h"
 #include "dymesh/core/scenario.h"
+#include "dymesh/core/placement.h"
 #include "dymesh/core/time_step_guide.h"
 
 /// A self-contained run: bodies, contact engine, rigid-body host and recorded time history.
@@ -62,6 +63,8 @@ class Simulation {
   bool in_contact_at_end() const { return steps_ > 0 && last_contact_time_ == time_; }
   /// The contact period and step limits of the scenario's stiffest pair.
   const TimeStepGuide& time_step_guide() const { return guide_; }
+  /// Gap (or overlap) of every pair at t = 0, after place_at_contact.
+  const std::vector<PairPlacement>& placements() const { return placements_; }
   double time() const { return time_; }
   double first_contact_time() const { return first_contact_time_; }
   double last_contact_time() const { return last_contact_time_; }
@@ -80,6 +83,7 @@ class Simulation {
   double first_contact_time_ = -1.0, last_contact_time_ = -1.0;
   bool finished_ = false, failed_numerics_ = false, separated_ = false;
   TimeStepGuide guide_;
+  std::vector<PairPlacement> placements_;
 };
 
 /// Loads the meshes of a scenario and builds the body models (shared, immutable).

@@ -1,0 +1,218 @@
+#include "dymesh/core/placement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "dymesh/core/units.h"
+
+namespace dymesh {
+namespace {
+
+constexpr double kNone = std::numeric_limits<double>::infinity();
+
+// one body posed in the earth frame
+struct PosedBody {
+  const BodyModel* model;
+  const RigidState* pose;
+  Mat3 rotation;
+};
+
+// first surface crossing of a ray: distance and whether the face there is turned towards the ray
+// (entering the body) or away (leaving it); distance kNone when there is none
+struct Crossing {
+  double t = kNone;
+  bool entering = false;
+};
+
+// a body's triangles binned on a grid across one direction d (its own frame): every ray along d
+// meets only the triangles of its cell
+class ParallelRayGrid {
+ public:
+  ParallelRayGrid(const TriMesh& mesh, const Vec3& d) : mesh_(mesh), d_(d) {
+    // plane axes across d and the projected bounds
+    e1_ = d.unitOrthogonal();
+    e2_ = d.cross(e1_);
+    lo_ = Eigen::Vector2d::Constant(kNone);
+    Eigen::Vector2d hi = -lo_;
+    for (const Vec3& p : mesh.vertices) {
+      lo_ = lo_.cwiseMin(Across(p));
+      hi = hi.cwiseMax(Across(p));
+    }
+    // about one triangle per cell
+    const Eigen::Vector2d size = (hi - lo_).cwiseMax(1e-9);
+    cell_ = std::sqrt(size.x() * size.y() / static_cast<double>(std::max<std::size_t>(1, mesh.triangles.size())));
+    cell_ = std::max(cell_, 1e-6 * size.maxCoeff());
+    nu_ = static_cast<int>(size.x() / cell_) + 1;
+    nv_ = static_cast<int>(size.y() / cell_) + 1;
+    cells_.resize(static_cast<std::size_t>(nu_) * nv_);
+    for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) Insert(t);
+  }
+
+  // first surface crossing of the ray from q along +d (forward) or -d, within `length`
+  Crossing First(const Vec3& q, bool forward, double length) const {
+    Crossing first;
+    const int cell = CellOf(Across(q));
+    if (cell < 0) return first;
+    const Vec3 dir = forward ? d_ : Vec3(-d_);
+    for (int t : cells_[cell]) {
+      const auto& tri = mesh_.triangles[t];
+      const Vec3 &a = mesh_.vertices[tri[0]], &b = mesh_.vertices[tri[1]], &c = mesh_.vertices[tri[2]];
+      double dist = 0.0;
+      if (!SegmentCrossesTriangle(q, dir, length, a, b, c, kSegmentSlack * (1.0 + length), &dist)) continue;
+      if (dist < first.t) first = Crossing{std::max(dist, 0.0), TriangleCross(a, b, c).dot(dir) < 0.0};
+    }
+    return first;
+  }
+
+ private:
+  Eigen::Vector2d Across(const Vec3& p) const { return {p.dot(e1_), p.dot(e2_)}; }
+
+  int Index(double x, double lo) const { return static_cast<int>(std::floor((x - lo) / cell_)); }
+
+  int CellOf(const Eigen::Vector2d& x) const {
+    const int i = Index(x.x(), lo_.x()), j = Index(x.y(), lo_.y());
+    return (i < 0 || j < 0 || i >= nu_ || j >= nv_) ? -1 : j * nu_ + i;
+  }
+
+  // a triangle goes into every cell its projected bounds touch (one cell of margin for round-off)
+  void Insert(int t) {
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(kNone), hi = -lo;
+    for (int k = 0; k < 3; ++k) {
+      lo = lo.cwiseMin(Across(mesh_.vertices[mesh_.triangles[t][k]]));
+      hi = hi.cwiseMax(Across(mesh_.vertices[mesh_.triangles[t][k]]));
+    }
+    const int i0 = std::max(0, Index(lo.x(), lo_.x()) - 1), j0 = std::max(0, Index(lo.y(), lo_.y()) - 1);
+    const int i1 = std::min(nu_ - 1, Index(hi.x(), lo_.x()) + 1), j1 = std::min(nv_ - 1, Index(hi.y(), lo_.y()) + 1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) cells_[static_cast<std::size_t>(j) * nu_ + i].push_back(t);
+  }
+
+  const TriMesh& mesh_;
+  Vec3 d_, e1_, e2_;
+  Eigen::Vector2d lo_;
+  double cell_ = 1.0;
+  int nu_ = 1, nv_ = 1;
+  std::vector<std::vector<int>> cells_;
+};
+
+// gap from `mover`'s vertices to `target`'s surface along earth direction d: the smallest entering
+// distance, or minus the deepest inside depth (distance back out) when a vertex is inside
+double DirectedGap(const PosedBody& mover, const PosedBody& target, const Vec3& d, double length) {
+  const ParallelRayGrid grid(target.model->mesh, target.rotation.transpose() * d);
+  double gap = kNone, depth = 0.0;
+  for (const Vec3& vertex : mover.model->mesh.vertices) {
+    const Vec3 p = mover.pose->position + mover.rotation * vertex;
+    const Vec3 q = target.rotation.transpose() * (p - target.pose->position);
+    const Crossing ahead = grid.First(q, true, length);
+    if (ahead.t == kNone) continue;
+    if (ahead.entering) {
+      gap = std::min(gap, ahead.t);
+      continue;
+    }
+    // surface ahead turned away: inside when the surface behind is turned away too
+    const Crossing behind = grid.First(q, false, length);
+    if (behind.t != kNone && !behind.entering) depth = std::max(depth, behind.t);
+  }
+  return depth > 0.0 ? -depth : gap;
+}
+
+// the way a moves relative to b: relative velocity, else the line between the CGs
+Vec3 ClosingDirection(const RigidState& a, const RigidState& b) {
+  const Vec3 v = a.velocity - b.velocity;
+  if (v.norm() > 0.0) return v.normalized();
+  const Vec3 r = b.position - a.position;
+  return r.norm() > 0.0 ? r.normalized() : Vec3(1, 0, 0);
+}
+
+double Diagonal(const BodyModel& m) {
+  const MeshStats s = ComputeStats(m.mesh);
+  return (s.max - s.min).norm();
+}
+
+// gap of a against b along d, both ways (b's vertices move along -d against a)
+PairPlacement MeasurePair(const std::vector<PosedBody>& bodies, int a, int b, const Vec3& d) {
+  const double length = (bodies[a].pose->position - bodies[b].pose->position).norm() + Diagonal(*bodies[a].model) +
+                        Diagonal(*bodies[b].model);
+  const double ab = DirectedGap(bodies[a], bodies[b], d, length);
+  const double ba = DirectedGap(bodies[b], bodies[a], -d, length);
+  PairPlacement p;
+  p.a = a;
+  p.b = b;
+  p.direction = d;
+  p.gap = std::min(ab, ba);  // the deeper overlap, or the nearer contact
+  p.meet = p.gap != kNone;
+  if (!p.meet) p.gap = 0.0;
+  return p;
+}
+
+std::vector<PosedBody> Pose(const Scenario& scenario, const std::vector<std::shared_ptr<const BodyModel>>& models) {
+  std::vector<PosedBody> bodies;
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    const RigidState& pose = scenario.bodies[i].initial;
+    bodies.push_back(PosedBody{models[i].get(), &pose, pose.Rotation()});
+  }
+  return bodies;
+}
+
+// a length in the scenario's units, for messages
+std::string LengthText(const Scenario& scenario, double metres) {
+  char buf[64];
+  if (scenario.units == UnitSystem::kUS)
+    std::snprintf(buf, sizeof buf, "%.4g in", metres / units::kInch);
+  else
+    std::snprintf(buf, sizeof buf, "%.4g m", metres);
+  return buf;
+}
+
+// moves body i along its velocity relative to the named body until `gap` remains
+void PlaceAtContact(Scenario* scenario, int i, const std::vector<PosedBody>& bodies) {
+  BodySpec& body = scenario->bodies[i];
+  const std::string field = "bodies[" + std::to_string(i) + "].initial.place_at_contact";
+  const int other = body.place_at_contact->with;
+  const Vec3 v = body.initial.velocity - scenario->bodies[other].initial.velocity;
+  if (!(v.norm() > 0.0))
+    throw InputError(scenario->file, field, "needs a velocity relative to \"" + scenario->bodies[other].name +
+                                                "\" to move along; this body has none");
+  const PairPlacement p = MeasurePair(bodies, i, other, v.normalized());
+  if (!p.meet)
+    throw InputError(scenario->file, field, "moving along its velocity, \"" + body.name + "\" never meets \"" +
+                                                scenario->bodies[other].name + "\": check the positions and heading");
+  body.initial.position += (p.gap - body.place_at_contact->gap) * p.direction;
+}
+
+}  // namespace
+
+std::vector<PairPlacement> MeasurePlacements(const Scenario& scenario,
+                                             const std::vector<std::shared_ptr<const BodyModel>>& models) {
+  const std::vector<PosedBody> bodies = Pose(scenario, models);
+  std::vector<PairPlacement> placements;
+  for (int a = 0; a < static_cast<int>(bodies.size()); ++a)
+    for (int b = a + 1; b < static_cast<int>(bodies.size()); ++b)
+      placements.push_back(MeasurePair(bodies, a, b, ClosingDirection(*bodies[a].pose, *bodies[b].pose)));
+  return placements;
+}
+
+std::vector<PairPlacement> PlaceBodies(Scenario* scenario, const std::vector<std::shared_ptr<const BodyModel>>& models) {
+  // bodies placed at contact, in scenario order (each against the poses so far)
+  for (int i = 0; i < static_cast<int>(scenario->bodies.size()); ++i)
+    if (scenario->bodies[i].place_at_contact) PlaceAtContact(scenario, i, Pose(*scenario, models));
+  // every pair: an overlap beyond the contact tolerance is refused unless allowed
+  const std::vector<PairPlacement> placements = MeasurePlacements(*scenario, models);
+  for (const PairPlacement& p : placements) {
+    const double depth = -p.gap;
+    if (!p.meet || depth <= scenario->contact.contact_tolerance) continue;
+    const std::string names = "\"" + scenario->bodies[p.a].name + "\" and \"" + scenario->bodies[p.b].name + "\"";
+    const std::string what = names + " overlap by " + LengthText(*scenario, depth) + " at t = 0";
+    if (!scenario->allow_initial_overlap)
+      throw InputError(scenario->file, "bodies[" + std::to_string(p.b) + "].initial.position",
+                       what + " (deeper than the contact tolerance): move them apart, use \"place_at_contact\", or "
+                              "set \"allow_initial_overlap\": true");
+    scenario->warnings.push_back({"initial_overlap", "allow_initial_overlap",
+                                  what + ": the overlap is pushed out in the first steps and its energy is not physical"});
+  }
+  return placements;
+}
+
+}  // namespace dymesh
