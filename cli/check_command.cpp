@@ -48,6 +48,8 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, std::ost
   // what the engine tolerates but a user should know
   if (s.nonmanifold_edges > 0)
     out << "    warning: non-manifold edges (more than two triangles on an edge): inside/outside may be ambiguous there\n";
+  if (const int duplicates = CountDuplicateFaces(model.mesh); duplicates > 0)
+    out << "    note: " << duplicates << " duplicated faces (on the same three vertices as another; tolerated up to 10 % of the faces)\n";
   if (s.open_edges > 0)
     out << "    note: open mesh (edges used by only one triangle): usual for display meshes\n";
 }

@@ -20,6 +20,7 @@ struct RunRequest {
   bool terminal = false;  ///< `out` is a terminal (progress bar rather than periodic lines)
   std::string locator = "embree";  ///< search: "embree", "neighbor_box" (DyMESH's own) or "brute_force"
   int threads = 0;                 ///< worker threads (0: all cores); results do not depend on it
+  std::function<void()> on_setup_done;  ///< called once the run is set up, before the first step
 };
 
 /// Runs a scenario and writes its outputs. `interrupts()` counts the stop requests received so far

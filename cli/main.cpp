@@ -17,11 +17,14 @@ namespace {
 // stop requests received (SIGINT, SIGTERM): the command's only global state, polled between steps
 // and between output files; core never sees it
 volatile std::sig_atomic_t stop_requests = 0;
+// set once set-up is over: before, a request ends the process at once (set-up writes nothing)
+volatile std::sig_atomic_t running = 0;
 
-// first request: stop at the next step; second: stop writing; third: die at once
+// during set-up: die at once; then first request: stop at the next step; second: stop writing;
+// third: die at once
 extern "C" void OnStopSignal(int signal) {
   stop_requests = stop_requests + 1;
-  if (stop_requests >= 3) {
+  if (!running || stop_requests >= 3) {
     std::signal(signal, SIG_DFL);
     std::raise(signal);
   }
@@ -88,6 +91,7 @@ int main(int argc, char** argv) {
     return Guarded([&] { return dymesh::cli::RunBench(bench); });
   }
   request.terminal = isatty(STDOUT_FILENO) != 0;
+  request.on_setup_done = [] { running = 1; };
   InstallStopHandlers();
   return Guarded([&] {
     return dymesh::cli::RunCommand(request, [] { return static_cast<int>(stop_requests); }, std::cout, std::cerr);

@@ -77,6 +77,7 @@ int RunCommand(const RunRequest& request, const std::function<int()>& interrupts
   std::optional<tbb::global_control> thread_limit;
   if (request.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, request.threads);
   Simulation sim(scenario, MakeLocatorFactory(request.locator, scenario.contact));
+  if (request.on_setup_done) request.on_setup_done();
   // simulate, with progress, until done or interrupted
   ProgressReporter::Options options;
   options.terminal = request.terminal;

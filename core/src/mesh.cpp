@@ -295,13 +295,17 @@ int RemoveDegenerateTriangles(TriMesh* mesh) {
 
 namespace dymesh {
 
+int CylinderRows(double radius, double height, int segments) {
+  // rows about as tall as a facet is wide (capped: memory is checked on the count it gives)
+  const double facet = 2.0 * radius * std::sin(3.14159265358979323846 / segments);
+  return static_cast<int>(std::clamp(std::round(height / facet), 1.0, 1e9));
+}
+
 TriMesh MakeCylinder(double radius, double height, int segments) {
   if (!(radius > 0.0) || !(height > 0.0) || !std::isfinite(radius) || !std::isfinite(height))
     throw std::invalid_argument("MakeCylinder: radius and height must be finite and > 0");
   if (segments < 3) throw std::invalid_argument("MakeCylinder: at least 3 segments");
-  // rings of the side: rows about as tall as a facet is wide
-  const double facet = 2.0 * radius * std::sin(3.14159265358979323846 / segments);
-  const int rows = std::max(1, static_cast<int>(std::lround(height / facet)));
+  const int rows = CylinderRows(radius, height, segments);
   TriMesh mesh;
   for (int r = 0; r <= rows; ++r)
     for (int k = 0; k < segments; ++k) {
@@ -325,6 +329,34 @@ TriMesh MakeCylinder(double radius, double height, int segments) {
   }
   if (SignedVolume(mesh) < 0.0) FlipWinding(&mesh);
   return mesh;
+}
+
+}  // namespace dymesh
+
+namespace dymesh {
+
+int CountDuplicateFaces(const TriMesh& mesh, std::array<int, 2>* first) {
+  // each triangle's sorted corners with its index; equal neighbours after sorting are repeats
+  std::vector<std::pair<std::array<int, 3>, int>> keys;
+  keys.reserve(mesh.triangles.size());
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    std::array<int, 3> k = mesh.triangles[t];
+    std::sort(k.begin(), k.end());
+    keys.push_back({k, t});
+  }
+  std::sort(keys.begin(), keys.end());
+  int count = 0;
+  std::array<int, 2> earliest{-1, -1};
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    if (keys[i].first != keys[i - 1].first) continue;
+    ++count;
+    // the repeat with the lowest index, and the first triangle of its group
+    std::size_t g = i - 1;
+    while (g > 0 && keys[g - 1].first == keys[i].first) --g;
+    if (earliest[0] < 0 || keys[i].second < earliest[0]) earliest = {keys[i].second, keys[g].second};
+  }
+  if (first != nullptr) *first = earliest;
+  return count;
 }
 
 }  // namespace dymesh

@@ -1,5 +1,8 @@
 #include "dymesh/core/mesh_import.h"
 
+#include "dymesh/core/atomic_file.h"
+#include "dymesh/core/memory_budget.h"
+
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -17,6 +20,9 @@ namespace {
 
 // weld tolerance relative to the bounds diagonal (merges only coincident vertices)
 constexpr double kRelativeWeldTolerance = 1e-9;
+
+// largest share of a mesh's faces that may repeat another face
+constexpr double kMaxDuplicateFaces = 0.10;
 
 // one signed axis of an axes mapping: body coordinate = sign * mesh coordinate[index]
 struct SignedAxis {
@@ -68,19 +74,11 @@ std::array<SignedAxis, 3> AxesMapping(const MeshSource& source, const std::strin
   return axes;
 }
 
-// refuses a failed write: removes the temporary file, names the path and the system's reason
-[[noreturn]] void FailWrite(const std::string& path, const std::string& what) {
-  const std::string reason = std::strerror(errno);
-  std::remove((path + ".tmp").c_str());
-  throw std::runtime_error("cannot write mesh " + path + ": " + what + ": " + reason);
-}
-
 }  // namespace
 
 TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
   // the file must exist
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, field, "file not found");
+  if (const std::string problem = NotARegularFile(path); !problem.empty()) throw InputError(path, field, problem);
   // read with assimp: triangles, shared vertices, every node's transform applied
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(
@@ -114,7 +112,11 @@ TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
 TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
   // a generated box is already in body axes and metres
   TriMesh mesh;
+  // memory first: a generated mesh is refused before it is built
+  const double refine = std::pow(4.0, source.subdivisions);
   if (source.cylinder) {
+    const int rows = CylinderRows(source.cylinder_radius, source.cylinder_height, source.cylinder_segments);
+    RefuseMeshBeyondMemory(2.0 * source.cylinder_segments * (rows + 1.0) * refine, scenario_file, field + ".cylinder");
     mesh = MakeCylinder(source.cylinder_radius, source.cylinder_height, source.cylinder_segments);
   } else if (source.box) {
     const Vec3& s = source.box_size;
@@ -123,6 +125,8 @@ TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file
     const auto& n = source.box_segments;
     if (n[0] < 1 || n[1] < 1 || n[2] < 1)
       throw InputError(scenario_file, field + ".box.segments", "box segments must be >= 1");
+    const double nx = n[0], ny = n[1], nz = n[2];
+    RefuseMeshBeyondMemory(4.0 * (nx * ny + ny * nz + nx * nz) * refine, scenario_file, field + ".box.segments");
     mesh = MakeBox(s.x(), s.y(), s.z(), n[0], n[1], n[2]);
   } else {
     // a file: load, map the axes (body i = sign * mesh axis), scale to metres
@@ -130,6 +134,7 @@ TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file
     if (!(source.scale > 0.0) || !std::isfinite(source.scale))
       throw InputError(scenario_file, field + ".scale", "expected a finite number > 0");
     const TriMesh file_mesh = LoadMeshFile(source.file, field + ".file");
+    RefuseMeshBeyondMemory(static_cast<double>(file_mesh.triangles.size()) * refine, scenario_file, field + ".subdivisions");
     mesh.triangles = file_mesh.triangles;
     mesh.vertices.reserve(file_mesh.vertices.size());
     for (const Vec3& p : file_mesh.vertices)
@@ -156,23 +161,21 @@ TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file
   RemoveDegenerateTriangles(&mesh);
   mesh = WeldRelative(mesh);
   if (mesh.triangles.empty()) throw InputError(scenario_file, field, "mesh has no usable triangles");
+  // faces given twice (any winding) make inside and outside ambiguous: the few double-sided panels
+  // of display meshes are tolerated (the stock car has 3 %; `dymesh check` notes them), a mesh
+  // with more than kMaxDuplicateFaces of its faces repeated is refused
+  std::array<int, 2> repeat{};
+  if (const int duplicates = CountDuplicateFaces(mesh, &repeat); duplicates > kMaxDuplicateFaces * mesh.triangles.size())
+    throw InputError(source.box || source.cylinder ? scenario_file : source.file, field,
+                     std::to_string(duplicates) + " duplicated faces (triangles on the same three vertices as another, "
+                     "e.g. triangle " + std::to_string(repeat[0]) + " repeats " + std::to_string(repeat[1]) +
+                     " after merging coincident vertices): remove them in a mesh editor");
   // orient outward (open game shells too: the sign about the bounds centre decides)
   if (SignedVolume(mesh) < 0.0) FlipWinding(&mesh);
   return mesh;
 }
 
 namespace {
-
-// writes `body` into `path` through a temporary file renamed into place
-void WriteThroughTemporary(const std::string& path, const std::function<void(std::FILE*)>& body) {
-  const std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "w");
-  if (f == nullptr) FailWrite(path, "cannot open " + tmp);
-  body(f);
-  const bool write_error = std::ferror(f) != 0;
-  if (std::fclose(f) != 0 || write_error) FailWrite(path, "write error on " + tmp);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) FailWrite(path, "cannot rename " + tmp);
-}
 
 // each line of `comment` after `prefix` ("# " for OBJ, "comment " for PLY)
 void WriteComment(std::FILE* f, const std::string& prefix, const std::string& comment) {
@@ -191,7 +194,7 @@ void WriteComment(std::FILE* f, const std::string& prefix, const std::string& co
 }  // namespace
 
 void WriteObj(const TriMesh& mesh, const std::string& path, const std::string& comment) {
-  WriteThroughTemporary(path, [&](std::FILE* f) {
+  WriteAtomically(path, [&](std::FILE* f) {
     // comment lines, vertices and 1-based faces
     WriteComment(f, "# ", comment);
     for (const Vec3& p : mesh.vertices) std::fprintf(f, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
@@ -203,7 +206,7 @@ void WritePly(const TriMesh& mesh, const std::vector<double>& crush, const std::
               const std::string& path, const std::string& comment) {
   if (crush.size() != mesh.vertices.size() || colours.size() != mesh.vertices.size())
     throw std::invalid_argument("WritePly: one crush value and one colour per vertex expected (" + path + ")");
-  WriteThroughTemporary(path, [&](std::FILE* f) {
+  WriteAtomically(path, [&](std::FILE* f) {
     // header: vertex position, crush scalar and colour; faces as index lists
     std::fputs("ply\nformat ascii 1.0\n", f);
     WriteComment(f, "comment ", comment);

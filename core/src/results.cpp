@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dymesh/core/atomic_file.h"
 #include "dymesh/core/colour_map.h"
 #include "dymesh/core/mesh_import.h"
 #include "dymesh/core/report.h"
@@ -187,20 +188,6 @@ nlohmann::json SummaryToJson(const Summary& s, UnitSystem system) {
                       {"growth_limited", d.growth_limited}, {"pushback_reduced", d.reduced},
                       {"non_finite", d.non_finite}, {"pair_steps_in_contact", d.pairs_in_contact}};
   return j;
-}
-
-void WriteFileAtomically(const std::string& path, const std::string& text) {
-  // write beside the target, then rename: a reader never sees half a file under the real name
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error(path + ": cannot write (" + tmp + ")");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error(path + ": cannot rename from " + tmp + ": " + ec.message());
 }
 
 namespace {

@@ -571,8 +571,8 @@ MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) 
   const std::string name = ReadString(src, *file, field);
   if (name.empty()) Fail(src, field, "expected a file name, got \"\"");
   mesh.file = ResolvePath(src, name);
-  std::error_code ec;
-  if (!fs::is_regular_file(mesh.file, ec)) Fail(src, field, "file not found: " + mesh.file);
+  if (const std::string problem = NotARegularFile(mesh.file); !problem.empty())
+    Fail(src, field, problem + ": " + mesh.file);
   // unit times scale: metres per file unit
   double unit = 1.0;
   if (const Json* v = Find(j, "unit"))
@@ -723,6 +723,8 @@ BodyFields Merge(const BodyFields& base, const BodyFields& over) {
 BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string& path) {
   const std::string name = ReadString(scenario, j, path);
   const std::string file = ResolvePath(scenario, name);
+  if (const std::string problem = NotARegularFile(file); !problem.empty())
+    Fail(scenario, path, problem + ": " + file);
   bool ok = false;
   const std::string text = ReadTextFile(file, &ok);
   if (!ok) Fail(scenario, path, "cannot open vehicle file: " + file);
@@ -899,7 +901,24 @@ Scenario ParseScenario(const std::string& json_text, const std::string& file) {
   return s;
 }
 
+std::string NotARegularFile(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  switch (status.type()) {
+    case fs::file_type::regular: return "";
+    case fs::file_type::not_found: return "file not found";
+    case fs::file_type::directory: return "a directory, not a file";
+    case fs::file_type::fifo: return "a FIFO (named pipe), not a file";
+    case fs::file_type::block:
+    case fs::file_type::character: return "a device, not a file";
+    case fs::file_type::socket: return "a socket, not a file";
+    default: return ec ? "cannot be read: " + ec.message() : "not a regular file";
+  }
+}
+
 Scenario LoadScenario(const std::string& path) {
+  if (const std::string problem = NotARegularFile(path); !problem.empty())
+    throw InputError(path, "(file)", problem + ": " + path);
   bool ok = false;
   const std::string text = ReadTextFile(path, &ok);
   if (!ok) throw InputError(path, "(file)", "cannot open: " + path);

@@ -50,6 +50,13 @@ MeshStats ComputeStats(const TriMesh& mesh);
 /// as tall as a facet is wide, caps as fans about a centre vertex; wound outward.
 TriMesh MakeCylinder(double radius, double height, int segments);
 
+/// Side rows of MakeCylinder: about as tall as a facet is wide.
+int CylinderRows(double radius, double height, int segments);
+
+/// Triangles that repeat an earlier triangle's three vertices (any order or winding); `first`, when
+/// given, receives the first repeat and the triangle it repeats.
+int CountDuplicateFaces(const TriMesh& mesh, std::array<int, 2>* first = nullptr);
+
 /// Signed volume (positive when triangles wind outward on a closed mesh).
 double SignedVolume(const TriMesh& mesh);
 

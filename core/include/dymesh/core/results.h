@@ -85,7 +85,4 @@ WrittenOutputs WriteOutputs(const Simulation& sim, const Summary& summary, const
 /// Permanent crush |Delta| of every vertex of body i [m].
 std::vector<double> VertexCrush(const Simulation& sim, int body);
 
-/// Writes `text` to `path` atomically (temporary file, then rename).
-void WriteFileAtomically(const std::string& path, const std::string& text);
-
 }  // namespace dymesh

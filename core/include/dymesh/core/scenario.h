@@ -78,6 +78,11 @@ struct Scenario {
   std::vector<RunWarning> warnings;  ///< implausible values and accepted oddities found at load
 };
 
+/// Why `path` cannot be read as an input file ("file not found", "a directory, not a file", "a FIFO
+/// (named pipe), not a file", a device, a socket), or "" for a regular file. Never opens it (a FIFO
+/// would block).
+std::string NotARegularFile(const std::string& path);
+
 /// Reads and validates a scenario file; mesh paths are resolved against the file's folder.
 /// Throws InputError naming the file, the field and what was expected.
 Scenario LoadScenario(const std::string& path);
