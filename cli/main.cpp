@@ -10,6 +10,7 @@
 
 #include "bench_command.h"
 #include "commands.h"
+#include "dymesh/core/output_folder.h"
 #include "dymesh/core/scenario.h"
 
 namespace {
@@ -46,11 +47,23 @@ int Guarded(F&& command) {
   } catch (const dymesh::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return dymesh::cli::kExitBadInput;
+  } catch (const dymesh::OutputFolderBusy& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return dymesh::cli::kExitFolderBusy;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return dymesh::cli::kExitFailure;
   }
 }
+
+// a worker thread count: 1..4096, said in words when refused
+const CLI::Validator kThreadCount(
+    [](std::string& value) -> std::string {
+      int n = 0;
+      const bool number = CLI::detail::lexical_cast(value, n);
+      return number && n >= 1 && n <= 4096 ? "" : "expected a whole number of threads from 1 to 4096, got " + value;
+    },
+    "1..4096");
 
 }  // namespace
 
@@ -67,7 +80,7 @@ int main(int argc, char** argv) {
   run->add_option("--locator", request.locator, "search: embree (default), neighbor_box (DyMESH's), brute_force")
       ->check(CLI::IsMember({"embree", "neighbor_box", "brute_force"}));
   run->add_option("--threads", request.threads, "worker threads (default: all cores); results are identical")
-      ->check(CLI::PositiveNumber);
+      ->check(kThreadCount);
   // check: validate without running
   std::string check_path;
   CLI::App* check = app.add_subcommand("check", "validate a scenario and its meshes without running; print mesh statistics");
@@ -78,12 +91,22 @@ int main(int argc, char** argv) {
   CLI::App* bench_cmd = app.add_subcommand("bench", "locate rates, step time and memory for two meshes in contact");
   bench_cmd->add_option("--master", bench.master, "master mesh file (metres)")->required();
   bench_cmd->add_option("--slave", bench.slave, "slave mesh file (metres)")->required();
-  bench_cmd->add_option("--threads", bench.threads, "worker threads for the step timing")->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--threads", bench.threads, "worker threads for the step timing")->check(kThreadCount);
   bench_cmd->add_option("--axes", axes, "body x,y,z from signed mesh axes, e.g. --axes=x,z,-y for y-up meshes")
       ->delimiter(',')
       ->expected(3);
   bench_cmd->add_flag("--json", bench.json, "print JSON");
-  CLI11_PARSE(app, argc, argv);
+  // command-line mistakes: one human line and exit 2 (help and version exit 0)
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "error: %s\nrun 'dymesh --help' or 'dymesh COMMAND --help' for the options\n", e.what());
+    return dymesh::cli::kExitBadInput;
+  }
 
   if (*check) return Guarded([&] { return dymesh::cli::CheckCommand(check_path, std::cout); });
   if (*bench_cmd) {

@@ -11,6 +11,7 @@
 #include "dymesh/accel/brute_force_locator.h"
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/accel/neighbor_box_locator.h"
+#include "dymesh/core/output_folder.h"
 #include "dymesh/core/results.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/simulation.h"
@@ -73,6 +74,8 @@ LocatorFactory MakeLocatorFactory(const std::string& name, const ContactOptions&
 int RunCommand(const RunRequest& request, const std::function<int()>& interrupts, std::ostream& out,
                std::ostream& err) {
   const Scenario scenario = LoadScenario(request.scenario_path);
+  // the output folder before any work: writable, every name fits, locked for the whole run
+  OutputFolder folder(request.out_dir, OutputFileNames(scenario));
   // the thread count changes the speed only (chunked, deterministic reductions)
   std::optional<tbb::global_control> thread_limit;
   if (request.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, request.threads);
@@ -96,7 +99,8 @@ int RunCommand(const RunRequest& request, const std::function<int()>& interrupts
                   "(summary.json \"status\": \"interrupted\"); interrupt again to stop writing\n",
                   sim.time(), sim.steps(), planned);
   }
-  // outputs; a further interruption stops between files
+  // outputs, replacing the previous run's; a further interruption stops between files
+  folder.ReplacePreviousRun();
   const WrittenOutputs written = WriteOutputs(sim, summary, request.out_dir, [&] { return interrupts() > stops; });
   if (!request.quiet) {
     out << scenario.file << ": " << scenario.name << (finished ? "" : " (interrupted)") << "\n";

@@ -287,6 +287,15 @@ void WriteBodyMeshes(const Simulation& sim, int i, const std::string& dir, doubl
 
 }  // namespace
 
+std::vector<std::string> OutputFileNames(const Scenario& scenario) {
+  std::vector<std::string> names;
+  for (const BodySpec& b : scenario.bodies)
+    for (const char* suffix : {"_undeformed", "_deformed"})
+      for (const char* ext : {".obj", ".ply"}) names.push_back(b.name + suffix + ext);
+  for (const char* name : {"history.csv", "report.html", "summary.json"}) names.push_back(name);
+  return names;
+}
+
 WrittenOutputs WriteOutputs(const Simulation& sim, const Summary& summary, const std::string& dir,
                             const std::function<bool()>& stop) {
   namespace fs = std::filesystem;
@@ -308,6 +317,7 @@ WrittenOutputs WriteOutputs(const Simulation& sim, const Summary& summary, const
   writer.Emit(summary_path, [&] {
     nlohmann::json j = SummaryToJson(summary, sim.scenario().units);
     j["scenario"] = {{"file", sim.scenario().file}, {"name", sim.scenario().name}};
+    j["files"] = OutputFileNames(sim.scenario());
     WriteFileAtomically(summary_path, j.dump(2) + "\n");
   });
   return writer.result();

@@ -69,6 +69,10 @@ Summary Summarize(const Simulation& sim);
 /// Summary as JSON in the scenario's unit system.
 nlohmann::json SummaryToJson(const Summary& summary, UnitSystem units);
 
+/// The plain names of the files WriteOutputs writes for `scenario`, in writing order: per body
+/// NAME_undeformed.obj/.ply and NAME_deformed.obj/.ply, then history.csv, report.html, summary.json.
+std::vector<std::string> OutputFileNames(const Scenario& scenario);
+
 /// Which output files were written and which were not (when writing was stopped).
 struct WrittenOutputs {
   std::vector<std::string> written, not_written;  ///< paths

@@ -1,0 +1,43 @@
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+/// An output folder held by one run: checked before the run, locked for its whole length, and
+/// cleaned of the files the previous run recorded in its manifest (and of no others).
+namespace dymesh {
+
+/// Another process holds the folder's lock.
+class OutputFolderBusy : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Hidden files of the folder: the lock and the list of files the last run wrote.
+inline constexpr const char* kLockFileName = ".dymesh.lock";
+inline constexpr const char* kManifestFileName = ".dymesh-manifest";
+
+class OutputFolder {
+ public:
+  /// Creates `dir` when missing, checks that it is a writable folder and that every name of
+  /// `outputs` (plain file names) fits its name limit with the temporary suffix, and takes an
+  /// exclusive lock on it. Throws InputError (field "--out") naming the folder and the reason, or
+  /// OutputFolderBusy when another run holds it.
+  OutputFolder(const std::string& dir, std::vector<std::string> outputs);
+  ~OutputFolder();  ///< releases the lock
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
+
+  /// Removes the regular files named by the previous run's manifest (plain names only), then
+  /// records this run's outputs as the manifest. Call just before writing the outputs.
+  void ReplacePreviousRun();
+
+  const std::string& dir() const { return dir_; }
+
+ private:
+  std::string dir_;
+  std::vector<std::string> outputs_;
+  int lock_fd_ = -1;
+};
+
+}  // namespace dymesh

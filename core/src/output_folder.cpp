@@ -1,0 +1,101 @@
+#include "dymesh/core/output_folder.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "dymesh/core/atomic_file.h"
+#include "dymesh/core/scenario.h"
+
+namespace dymesh {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void Refuse(const std::string& dir, const std::string& why) { throw InputError(dir, "--out", why); }
+
+// the folder exists (created when missing) and is a folder
+void EnsureFolder(const std::string& dir) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(dir, ec);
+  if (status.type() == fs::file_type::not_found) {
+    fs::create_directories(dir, ec);
+    if (ec) Refuse(dir, "cannot create the output folder: " + ec.message());
+    return;
+  }
+  if (ec) Refuse(dir, "cannot inspect the output folder: " + ec.message());
+  if (status.type() != fs::file_type::directory) Refuse(dir, "exists and is not a folder: give a folder for --out");
+}
+
+// a file can be created in it (the same way the outputs will be)
+void CheckWritable(const std::string& dir) {
+  std::string probe = (fs::path(dir) / ".dymesh-probe.XXXXXX").string();
+  const int fd = mkstemp(probe.data());
+  if (fd < 0) Refuse(dir, std::string("the output folder is not writable: ") + std::strerror(errno));
+  close(fd);
+  unlink(probe.c_str());
+}
+
+// every output name and its temporary fit the folder's name limit
+void CheckNames(const std::string& dir, const std::vector<std::string>& names) {
+  const long limit = pathconf(dir.c_str(), _PC_NAME_MAX);
+  const std::size_t max = limit > 0 ? static_cast<std::size_t>(limit) : 255;
+  for (const std::string& name : names)
+    if (name.size() + kTemporaryNameExtra > max)
+      Refuse(dir, "output file name \"" + name + "\" is " + std::to_string(name.size()) +
+                      " bytes; this folder allows " + std::to_string(max - kTemporaryNameExtra) +
+                      " (with the temporary suffix): shorten the body name");
+}
+
+// a manifest entry dymesh may remove: a plain name in this folder, never a path
+bool PlainName(const std::string& name) {
+  return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos &&
+         name != kLockFileName && name != kManifestFileName;
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs)
+    : dir_(dir), outputs_(std::move(outputs)) {
+  EnsureFolder(dir_);
+  CheckWritable(dir_);
+  CheckNames(dir_, outputs_);
+  // exclusive for the whole run; the kernel releases it if the process dies
+  const std::string lock = (fs::path(dir_) / kLockFileName).string();
+  lock_fd_ = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0) Refuse(dir_, "cannot create the lock file " + lock + ": " + std::strerror(errno));
+  if (flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    close(lock_fd_);
+    lock_fd_ = -1;
+    throw OutputFolderBusy(dir_ + ": --out: another dymesh run is writing into this folder (it holds " + lock +
+                           "): wait for it to finish or choose another folder");
+  }
+}
+
+OutputFolder::~OutputFolder() {
+  if (lock_fd_ >= 0) close(lock_fd_);
+}
+
+void OutputFolder::ReplacePreviousRun() {
+  const fs::path manifest = fs::path(dir_) / kManifestFileName;
+  // the previous run's files, as it recorded them
+  std::ifstream previous(manifest);
+  std::string name;
+  while (std::getline(previous, name)) {
+    if (!PlainName(name)) continue;
+    std::error_code ec;
+    const fs::path file = fs::path(dir_) / name;
+    if (fs::is_regular_file(fs::symlink_status(file, ec))) fs::remove(file, ec);
+  }
+  // this run's, before any of them is written
+  std::string text;
+  for (const std::string& output : outputs_) text += output + "\n";
+  WriteFileAtomically(manifest.string(), text);
+}
+
+}  // namespace dymesh
