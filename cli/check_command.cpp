@@ -16,6 +16,7 @@ namespace {
 
 // where a body's mesh comes from
 std::string SourceText(const BodySpec& body) {
+  if (body.mesh.cylinder) return "generated cylinder";
   if (body.mesh.box) return "generated box";
   std::string s = body.mesh.file;
   if (body.mesh.subdivisions > 0) s += Format(" (%d subdivisions)", body.mesh.subdivisions);

@@ -50,8 +50,9 @@ class ParallelRayGrid {
     for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) Insert(t);
   }
 
-  // first surface crossing of the ray from q along +d (forward) or -d, within `length`
-  Crossing First(const Vec3& q, bool forward, double length) const {
+  // first surface crossing of the ray from q along +d (forward) or -d, within `length`, at least
+  // `skip` away (a point on the surface skips its own face when looking back)
+  Crossing First(const Vec3& q, bool forward, double length, double skip) const {
     Crossing first;
     const int cell = CellOf(Across(q));
     if (cell < 0) return first;
@@ -61,6 +62,7 @@ class ParallelRayGrid {
       const Vec3 &a = mesh_.vertices[tri[0]], &b = mesh_.vertices[tri[1]], &c = mesh_.vertices[tri[2]];
       double dist = 0.0;
       if (!SegmentCrossesTriangle(q, dir, length, a, b, c, kSegmentSlack * (1.0 + length), &dist)) continue;
+      if (dist < skip) continue;
       if (dist < first.t) first = Crossing{std::max(dist, 0.0), TriangleCross(a, b, c).dot(dir) < 0.0};
     }
     return first;
@@ -105,14 +107,15 @@ double DirectedGap(const PosedBody& mover, const PosedBody& target, const Vec3& 
   for (const Vec3& vertex : mover.model->mesh.vertices) {
     const Vec3 p = mover.pose->position + mover.rotation * vertex;
     const Vec3 q = target.rotation.transpose() * (p - target.pose->position);
-    const Crossing ahead = grid.First(q, true, length);
+    const Crossing ahead = grid.First(q, true, length, -kNone);
     if (ahead.t == kNone) continue;
     if (ahead.entering) {
       gap = std::min(gap, ahead.t);
       continue;
     }
-    // surface ahead turned away: inside when the surface behind is turned away too
-    const Crossing behind = grid.First(q, false, length);
+    // surface ahead turned away: inside when the surface behind is turned away too (a vertex on
+    // the far face, as a box pushed exactly through a wall, looks past that face)
+    const Crossing behind = grid.First(q, false, length, kSegmentSlack * (1.0 + length));
     if (behind.t != kNone && !behind.entering) depth = std::max(depth, behind.t);
   }
   return depth > 0.0 ? -depth : gap;

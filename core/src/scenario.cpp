@@ -357,19 +357,24 @@ InputUnit LengthUnit(const Source& src) { return src.units.us ? InputUnit{units:
 InputUnit MassUnit(const Source& src) { return src.units.us ? InputUnit{units::kPoundMass, "lb"} : InputUnit{1.0, "kg"}; }
 constexpr InputUnit kPlain{1.0, ""};
 
-std::string InUnits(double si, InputUnit u) {
-  return FormatDouble(si / u.per_unit) + (u.name[0] != '\0' ? std::string(" ") + u.name : std::string());
+// a value in the file's units: exact for what the user wrote, 4 digits for a range bound
+std::string InUnits(double si, InputUnit u, bool exact = true) {
+  char rounded[32];
+  std::snprintf(rounded, sizeof rounded, "%.4g", si / u.per_unit);
+  return (exact ? FormatDouble(si / u.per_unit) : std::string(rounded)) +
+         (u.name[0] != '\0' ? std::string(" ") + u.name : std::string());
 }
 
 // refuses an impossible value, warns on an implausible one; `si` is the converted value
 void CheckPhysical(const Source& src, const std::string& field, double si, const PhysicalRange& r, InputUnit u) {
   if (si < r.hard_lo || si > r.hard_hi)
-    Fail(src, field, std::string("expected a physically possible ") + r.what + " in " + InUnits(r.hard_lo, u) +
-                         " .. " + InUnits(r.hard_hi, u) + ", got " + InUnits(si, u));
+    Fail(src, field, std::string("expected a physically possible ") + r.what + " in " + InUnits(r.hard_lo, u, false) +
+                         " .. " + InUnits(r.hard_hi, u, false) + ", got " + InUnits(si, u, false));
   if ((si < r.lo || si > r.hi) && src.warnings != nullptr)
     src.warnings->push_back({"implausible_value", field,
                              std::string(r.what) + " " + InUnits(si, u) + " is outside the range met in vehicle "
-                             "collisions, " + InUnits(r.lo, u) + " .. " + InUnits(r.hi, u) + ": check the value and its unit"});
+                             "collisions, " + InUnits(r.lo, u, false) + " .. " + InUnits(r.hi, u, false) +
+                             ": check the value and its unit"});
 }
 
 constexpr double kSpeedOfSound = 343.0;  // [m/s]

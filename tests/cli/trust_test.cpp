@@ -1,0 +1,419 @@
+// A run is trustworthy or says why not (issue 9), met the way a user meets it: through the dymesh
+// command. Each test is one class of bad or unusual input: its exit code, its message (file, field,
+// what was expected), the status and warnings of the summary, and the files left in the folder.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/file.h>
+#include <sys/stat.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <thread>
+
+#include "process.h"
+
+namespace {
+
+using dymesh::testing::ProcessResult;
+using dymesh::testing::ReadFile;
+using dymesh::testing::RunProcess;
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+// a box car into a rigid wall at 30 mph, front 0.5 in from the wall; separates at ~0.1 s
+Json BoxScenario() {
+  return Json::parse(R"({
+    "name": "box into wall", "units": "US",
+    "time": {"step": 0.0005, "duration": 0.2, "stop_at_separation": true},
+    "bodies": [
+      {"name": "car", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [1, 11, 5]}},
+       "weight": 3000, "restitution": 0.1, "stiffness": {"default": {"A": 300, "B": 100}},
+       "initial": {"position": [0, 0, 0], "speed": 30}},
+      {"name": "wall", "mesh": {"box": {"length": 40, "width": 400, "height": 100}}, "rigid": true,
+       "motion": "fixed", "initial": {"position": [110.5, 0, 0]}}
+    ]})");
+}
+
+class Trust : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("dymesh_trust_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  ProcessResult Dymesh(const std::vector<std::string>& args, double seconds = 120.0) const {
+    std::vector<std::string> argv = {DYMESH_CLI};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return RunProcess(argv, dir_ / "process", seconds);
+  }
+  // runs `j` into dir_/out
+  ProcessResult Run(const Json& j, const std::string& name = "s.json") const {
+    return Dymesh({"run", Write(name, j.dump()), "--quiet", "--out", (dir_ / "out").string()});
+  }
+  Json Summary() const { return Json::parse(ReadFile(dir_ / "out" / "summary.json")); }
+  // the warning codes of the summary
+  std::set<std::string> WarningCodes() const {
+    std::set<std::string> codes;
+    const Json summary = Summary();
+    for (const Json& w : summary["warnings"]) codes.insert(w["code"].get<std::string>());
+    return codes;
+  }
+  bool Has(const std::string& text, const std::string& part) const { return text.find(part) != std::string::npos; }
+
+  fs::path dir_;
+};
+
+// ---- run status -------------------------------------------------------------------------------
+
+TEST_F(Trust, CleanRunIsCompleteWithNoWarningsAndExitsZero) {
+  const ProcessResult r = Run(BoxScenario());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(Summary()["overall"]["status"], "complete");
+  EXPECT_TRUE(Summary()["warnings"].empty());
+  EXPECT_TRUE(Has(ReadFile(dir_ / "out" / "report.html"), "<b>status: complete</b>"));
+}
+
+TEST_F(Trust, RunCutShortInContactSaysSoAndExitsFour) {
+  Json j = BoxScenario();
+  j["time"]["duration"] = 0.05;  // the crush lasts ~0.1 s
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_EQ(Summary()["overall"]["status"], "ended_in_contact");
+  EXPECT_EQ(WarningCodes().count("ran_to_duration"), 1u);
+  EXPECT_TRUE(Has(r.err, "status: ended_in_contact")) << r.err;
+  EXPECT_TRUE(Has(r.err, "warning [ran_to_duration] time.duration:")) << r.err;
+  const std::string html = ReadFile(dir_ / "out" / "report.html");
+  EXPECT_TRUE(Has(html, "<b>status: ended_in_contact</b>"));
+  EXPECT_LT(html.find("id=\"status\""), html.find("id=\"summary\""));  // at the top
+  EXPECT_TRUE(Has(html, "<code>ran_to_duration</code>"));
+}
+
+TEST_F(Trust, BodiesThatNeverMeetAreWarnedAndExitThree) {
+  Json j = BoxScenario();
+  j["bodies"][0]["initial"]["heading"] = 180;  // drives away from the wall
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(Summary()["overall"]["status"], "complete");
+  EXPECT_EQ(WarningCodes().count("no_contact"), 1u);
+  EXPECT_TRUE(Has(r.err, "warning [no_contact]")) << r.err;
+}
+
+// ---- time step --------------------------------------------------------------------------------
+
+TEST_F(Trust, CheckPrintsTheRecommendedStep) {
+  const ProcessResult r = Dymesh({"check", Write("s.json", BoxScenario().dump())});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(Has(r.out, "contact period ")) << r.out;
+  EXPECT_TRUE(Has(r.out, "(\"car\" against \"wall\"): recommended step <= ")) << r.out;
+  EXPECT_TRUE(Has(r.out, "stable limit ")) << r.out;
+}
+
+TEST_F(Trust, CoarseStepIsWarned) {
+  Json j = BoxScenario();
+  j["time"]["step"] = 0.01;  // the 10 ms step of the issue: ~12 steps per contact
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(WarningCodes().count("time_step_coarse"), 1u);
+  EXPECT_TRUE(Has(r.err, "warning [time_step_coarse] time.step: step 0.01 s resolves the contact period")) << r.err;
+}
+
+TEST_F(Trust, UnstableStepIsRefusedNamingTheLimit) {
+  Json j = BoxScenario();
+  j["bodies"][0]["stiffness"]["default"] = {{"A", 300}, {"B", 1e7}};  // stiff: contact period ~1 ms
+  j["time"]["step"] = 0.005;
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "s.json: time.step: step 0.005 s is beyond the stable limit")) << r.err;
+  EXPECT_TRUE(Has(r.err, "\"car\" against \"wall\"")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+}
+
+TEST_F(Trust, StepLongerThanTheDurationIsRefused) {
+  Json j = BoxScenario();
+  j["time"] = {{"step", 0.5}, {"duration", 0.2}};
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "time.step: expected a step no longer than time.duration (0.2 s), got 0.5 s")) << r.err;
+}
+
+// ---- placement --------------------------------------------------------------------------------
+
+TEST_F(Trust, InitialOverlapIsRefusedNamingBothBodiesAndTheDepth) {
+  Json j = BoxScenario();
+  j["bodies"][0]["initial"]["position"] = {40.5, 0, 0};  // front 40 in inside the wall
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "s.json: bodies[1].initial.position: \"car\" and \"wall\" overlap by 40 in at t = 0")) << r.err;
+  EXPECT_TRUE(Has(r.err, "allow_initial_overlap")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+  // check says the same
+  const ProcessResult c = Dymesh({"check", (dir_ / "s.json").string()});
+  EXPECT_EQ(c.exit_code, 2);
+  EXPECT_TRUE(Has(c.err, "overlap by 40 in")) << c.err;
+}
+
+TEST_F(Trust, AllowedOverlapRunsWithAWarning) {
+  Json j = BoxScenario();
+  j["bodies"][0]["initial"]["position"] = {10.5, 0, 0};
+  j["allow_initial_overlap"] = true;
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(WarningCodes().count("initial_overlap"), 1u);
+}
+
+TEST_F(Trust, CheckReportsTheGapOfEveryPair) {
+  const ProcessResult r = Dymesh({"check", Write("s.json", BoxScenario().dump())});
+  EXPECT_TRUE(Has(r.out, "placement \"car\" / \"wall\": gap 0.500 in along [1.000, 0.000, 0.000]")) << r.out;
+}
+
+TEST_F(Trust, PlaceAtContactMovesTheBodyToTheGapAndGivesTheSameRun) {
+  // the car starts 100 in back and is placed 0.5 in from the wall: the same run as the set-up by hand
+  Json placed = BoxScenario();
+  placed["bodies"][0]["initial"]["position"] = {-100, 0, 0};
+  placed["bodies"][0]["initial"]["place_at_contact"] = {{"with", "wall"}, {"gap", 0.5}};
+  const ProcessResult c = Dymesh({"check", Write("placed.json", placed.dump())});
+  EXPECT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_TRUE(Has(c.out, "gap 0.500 in")) << c.out;
+  ASSERT_EQ(Run(placed, "placed.json").exit_code, 0);
+  const Json by_placement = Summary();
+  ASSERT_EQ(Run(BoxScenario()).exit_code, 0);
+  const Json by_hand = Summary();
+  // positions agree to round-off (1e-12 in of 100 in): delta-V and crush to 1e-9 relative
+  EXPECT_NEAR(by_placement["bodies"][0]["delta_v"].get<double>(), by_hand["bodies"][0]["delta_v"].get<double>(), 1e-9 * 30);
+  EXPECT_NEAR(by_placement["bodies"][0]["max_crush"].get<double>(), by_hand["bodies"][0]["max_crush"].get<double>(), 1e-6);
+}
+
+TEST_F(Trust, PlaceAtContactThatNeverMeetsIsRefused) {
+  Json j = BoxScenario();
+  j["bodies"][0]["initial"]["heading"] = 90;  // drives along the wall
+  j["bodies"][0]["initial"]["position"] = {-300, 0, 0};
+  j["bodies"][0]["initial"]["place_at_contact"] = {{"with", "wall"}};
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "bodies[0].initial.place_at_contact: moving along its velocity, \"car\" never meets \"wall\"")) << r.err;
+  j["bodies"][0]["initial"]["place_at_contact"] = {{"with", "nobody"}};
+  const ProcessResult unknown = Run(j);
+  EXPECT_TRUE(Has(unknown.err, "place_at_contact.with: expected the name of another body, got \"nobody\"")) << unknown.err;
+}
+
+TEST_F(Trust, CylinderPoleIsAClosedMesh) {
+  Json j = BoxScenario();
+  j["bodies"][1] = {{"name", "pole"}, {"mesh", {{"cylinder", {{"radius", 6}, {"height", 120}, {"segments", 24}}}}},
+                    {"rigid", true}, {"motion", "fixed"}, {"initial", {{"position", {96.5, 0, 0}}}}};
+  const ProcessResult r = Dymesh({"check", Write("s.json", j.dump())});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(Has(r.out, "body 1 \"pole\": generated cylinder")) << r.out;
+  EXPECT_TRUE(Has(r.out, "open edges 0, non-manifold edges 0")) << r.out;
+  EXPECT_TRUE(Has(r.out, "gap 0.500 in")) << r.out;
+}
+
+// ---- physical ranges --------------------------------------------------------------------------
+
+TEST_F(Trust, ImpossibleValuesAreRefusedNamingTheField) {
+  struct Case {
+    const char* pointer;
+    Json value;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"/bodies/0/initial/speed", 1e308, "bodies[0].initial.speed: expected a physically possible speed in -767.3 mph .. 767.3 mph, got 1e+308 mph"},
+      {"/bodies/0/initial/yaw_rate", 1e308, "bodies[0].initial.yaw_rate: expected a physically possible yaw rate"},
+      {"/bodies/0/initial/heading", 1e308, "bodies[0].initial.heading: expected a physically possible heading"},
+      {"/bodies/0/weight", 1e-300, "bodies[0].weight: expected a physically possible mass in 2.205 lb .. 2.205e+07 lb, got 1e-300 lb"},
+      {"/bodies/0/initial/position/0", 1e9, "bodies[0].initial.position[0]: expected a physically possible position"},
+      {"/bodies/0/friction", 50, "bodies[0].friction: expected a physically possible friction coefficient"},
+      {"/bodies/0/mesh/box/length", 1e6, "bodies[0].mesh.box.length: expected a physically possible box size"},
+  };
+  for (const Case& c : cases) {
+    Json j = BoxScenario();
+    j[Json::json_pointer(c.pointer)] = c.value;
+    const ProcessResult r = Run(j);
+    EXPECT_EQ(r.exit_code, 2) << c.pointer;
+    EXPECT_TRUE(Has(r.err, std::string("s.json: ") + c.message)) << c.pointer << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+  }
+}
+
+TEST_F(Trust, AbsurdStiffnessIsRefused) {
+  // A = B = 1e12 lb/in^2 (the issue's 241 million mph): beyond any material
+  Json j = BoxScenario();
+  j["bodies"][0]["stiffness"]["default"] = {{"A", 1e12}, {"B", 1e12}};
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "s.json: bodies[0].stiffness.default.B: expected a physically possible 3-D stiffness B [N/m^3] in 0 .. 1e+15, got 9.048e+15")) << r.err;
+  // 1e8 lb/in^2 is possible (a rigid-wall stand-in) but not at this step: the contact period is ~0.2 ms
+  j["bodies"][0]["stiffness"]["default"] = {{"A", 300}, {"B", 1e8}};
+  const ProcessResult unstable = Run(j);
+  EXPECT_EQ(unstable.exit_code, 2);
+  EXPECT_TRUE(Has(unstable.err, "time.step: step 0.0005 s is beyond the stable limit")) << unstable.err;
+}
+
+TEST_F(Trust, ImplausibleValuesRunWithAWarningNamingTheField) {
+  Json j = BoxScenario();
+  j["bodies"][0]["initial"]["speed"] = 200;  // mph
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_TRUE(Has(r.err, "warning [implausible_value] bodies[0].initial.speed: speed 200 mph is outside the range")) << r.err;
+  const Json w = Summary()["warnings"][0];
+  EXPECT_EQ(w["code"], "implausible_value");
+  EXPECT_EQ(w["field"], "bodies[0].initial.speed");
+}
+
+TEST_F(Trust, AllRigidScenarioIsRefused) {
+  Json j = BoxScenario();
+  j["bodies"][0]["rigid"] = true;
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "s.json: bodies: every body is rigid: at least one must be deformable")) << r.err;
+}
+
+// ---- meshes -----------------------------------------------------------------------------------
+
+// an OBJ of a unit-size box (in metres) with every face written `copies` times
+std::string BoxObj(int copies) {
+  std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+  const char* faces = "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
+  for (int i = 0; i < copies; ++i) obj += faces;
+  return obj;
+}
+
+// the box scenario with the car's mesh from `file` (metres, scaled to the car's length)
+Json WithCarMesh(const std::string& file) {
+  Json j = BoxScenario();
+  j["bodies"][0]["mesh"] = {{"file", file}, {"unit", "m"}, {"fit_length", 180}};
+  return j;
+}
+
+TEST_F(Trust, MeshOfDuplicatedFacesIsRefusedWithTheCount) {
+  Write("doubled.obj", BoxObj(2));
+  const ProcessResult r = Run(WithCarMesh("doubled.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "doubled.obj: bodies[0].mesh: 12 duplicated faces")) << r.err;
+}
+
+TEST_F(Trust, SingleOpenTriangleIsRefusedForADeformableBody) {
+  Write("triangle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const ProcessResult r = Run(WithCarMesh("triangle.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "s.json: bodies[0].mesh: a deformable body's mesh must enclose a volume; this one (1 triangles, 3 open edges)")) << r.err;
+}
+
+TEST_F(Trust, DirectoryAndFifoAsMeshAreNamedAsSuch) {
+  fs::create_directories(dir_ / "folder.obj");
+  const ProcessResult dir = Run(WithCarMesh("folder.obj"));
+  EXPECT_EQ(dir.exit_code, 2);
+  EXPECT_TRUE(Has(dir.err, "bodies[0].mesh.file: a directory, not a file: ")) << dir.err;
+  ASSERT_EQ(mkfifo((dir_ / "pipe.obj").c_str(), 0644), 0);
+  const ProcessResult fifo = Run(WithCarMesh("pipe.obj"));  // must not block on the FIFO
+  EXPECT_EQ(fifo.exit_code, 2);
+  EXPECT_TRUE(Has(fifo.err, "bodies[0].mesh.file: a FIFO (named pipe), not a file: ")) << fifo.err;
+  const ProcessResult scenario = Dymesh({"check", (dir_ / "pipe.obj").string()});
+  EXPECT_TRUE(Has(scenario.err, "a FIFO (named pipe), not a file")) << scenario.err;
+}
+
+TEST_F(Trust, BoxTooBigForMemoryIsRefusedBeforeItIsBuilt) {
+  Json j = BoxScenario();
+  j["bodies"][0]["mesh"]["box"]["segments"] = {20000, 20000, 20000};  // 4.8e9 triangles
+  const auto start = std::chrono::steady_clock::now();
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "s.json: bodies[0].mesh.box.segments: the mesh would have 4.8e+09 triangles")) << r.err;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));  // refused, not attempted
+}
+
+TEST_F(Trust, TerminateDuringSetUpEndsAtOnce) {
+  // a long set-up (the car subdivided to ~0.5 M triangles), stopped 0.5 s in
+  Json j = BoxScenario();
+  j["bodies"][0]["mesh"]["box"]["segments"] = {30, 110, 50};
+  j["bodies"][0]["mesh"]["subdivisions"] = 2;
+  fs::create_directories(dir_ / "process");
+  const auto p = dymesh::testing::StartProcess({DYMESH_CLI, "run", Write("s.json", j.dump()), "--out", (dir_ / "out").string()},
+                                               dir_ / "process" / "out.txt", dir_ / "process" / "err.txt");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const auto sent = std::chrono::steady_clock::now();
+  kill(p.pid, SIGTERM);
+  const int code = dymesh::testing::WaitProcess(p, 60.0);
+  EXPECT_EQ(code, 128 + SIGTERM);
+  EXPECT_LT(std::chrono::steady_clock::now() - sent, std::chrono::seconds(2));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+}
+
+// ---- output folders ---------------------------------------------------------------------------
+
+TEST_F(Trust, OutThatIsAFileIsRefusedBeforeRunning) {
+  Write("taken", "not a folder");
+  const ProcessResult r = Dymesh({"run", Write("s.json", BoxScenario().dump()), "--out", (dir_ / "taken").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "taken: --out: exists and is not a folder")) << r.err;
+  EXPECT_EQ(ReadFile(dir_ / "taken"), "not a folder");
+}
+
+TEST_F(Trust, OutThatCannotBeCreatedIsRefusedBeforeRunning) {
+  const ProcessResult r = Dymesh({"run", Write("s.json", BoxScenario().dump()), "--out", "/proc/dymesh_out"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "/proc/dymesh_out: --out: cannot create the output folder")) << r.err;
+}
+
+TEST_F(Trust, OverLongBodyNameIsRefusedBeforeRunning) {
+  Json j = BoxScenario();
+  j["bodies"][0]["name"] = std::string(240, 'c');
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "--out: output file name \"" + std::string(240, 'c') + "_undeformed.obj\" is 255 bytes")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "history.csv"));
+}
+
+TEST_F(Trust, ReusedFolderKeepsOnlyTheNewRunsFilesAndForeignFiles) {
+  ASSERT_EQ(Run(BoxScenario()).exit_code, 0);
+  Write("out/notes.txt", "mine");
+  Json j = BoxScenario();
+  j["bodies"][0]["name"] = "truck";
+  ASSERT_EQ(Run(j).exit_code, 0);
+  // the car's meshes are gone, the user's file stays, and the summary lists exactly what is there
+  std::set<std::string> present;
+  for (const auto& e : fs::directory_iterator(dir_ / "out"))
+    if (e.path().filename().string()[0] != '.') present.insert(e.path().filename().string());
+  std::set<std::string> listed;
+  const Json summary = Summary();
+  for (const Json& f : summary["files"]) listed.insert(f.get<std::string>());
+  listed.insert("notes.txt");
+  EXPECT_EQ(present, listed);
+  EXPECT_EQ(present.count("car_deformed.ply"), 0u);
+  EXPECT_EQ(ReadFile(dir_ / "out" / "notes.txt"), "mine");
+}
+
+TEST_F(Trust, SecondRunIntoABusyFolderIsRefused) {
+  // another run holds the folder (its lock, taken here as dymesh takes it)
+  fs::create_directories(dir_ / "out");
+  const int fd = open((dir_ / "out" / ".dymesh.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_EQ(flock(fd, LOCK_EX | LOCK_NB), 0);
+  const ProcessResult r = Run(BoxScenario());
+  EXPECT_EQ(r.exit_code, 6);
+  EXPECT_TRUE(Has(r.err, "--out: another dymesh run is writing into this folder")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+  close(fd);
+  EXPECT_EQ(Run(BoxScenario()).exit_code, 0);  // free again
+}
+
+TEST_F(Trust, CommandLineMistakesGetOneHumanLine) {
+  const ProcessResult zero = Dymesh({"run", "s.json", "--threads", "0"});
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_TRUE(Has(zero.err, "error: --threads: expected a whole number of threads from 1 to 4096, got 0")) << zero.err;
+  EXPECT_LT(zero.err.size(), 200u);
+  const ProcessResult extra = Dymesh({"run", "a.json", "b.json"});
+  EXPECT_EQ(extra.exit_code, 2);
+  const ProcessResult missing = Dymesh({"check"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_TRUE(Has(missing.err, "scenario is required")) << missing.err;
+}
+
+}  // namespace
