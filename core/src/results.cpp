@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -133,6 +134,23 @@ Summary Summarize(const Simulation& sim) {
   return sum;
 }
 
+namespace {
+
+// a failed run's overflowed values as JSON numbers (never null): +-inf as the largest finite
+// magnitude, NaN as 0; the status says the values are not usable
+void ReplaceNonFinite(nlohmann::json* j) {
+  if (j->is_number_float()) {
+    const double v = j->get<double>();
+    if (std::isnan(v)) *j = 0.0;
+    else if (std::isinf(v)) *j = v > 0 ? std::numeric_limits<double>::max() : std::numeric_limits<double>::lowest();
+    return;
+  }
+  if (j->is_structured())
+    for (auto& item : *j) ReplaceNonFinite(&item);
+}
+
+}  // namespace
+
 nlohmann::json SummaryToJson(const Summary& s, UnitSystem system) {
   const OutputUnits u = UnitsOf(system);
   const double g = units::kStandardGravity;
@@ -187,6 +205,7 @@ nlohmann::json SummaryToJson(const Summary& s, UnitSystem system) {
                       {"too_far_limited", d.too_far_limited}, {"max_crush_limited", d.max_crush_limited},
                       {"growth_limited", d.growth_limited}, {"pushback_reduced", d.reduced},
                       {"non_finite", d.non_finite}, {"pair_steps_in_contact", d.pairs_in_contact}};
+  ReplaceNonFinite(&j);
   return j;
 }
 

@@ -1,0 +1,62 @@
+// Status of a run that went non-finite, through the library (the command refuses such input
+// before it runs): stopped at the last finite step, marked failed_numerics, and its summary still
+// valid JSON numbers.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "dymesh/accel/brute_force_locator.h"
+#include "dymesh/core/results.h"
+#include "dymesh/core/run_assessment.h"
+#include "dymesh/core/simulation.h"
+#include "test_scenarios.h"
+
+namespace dymesh {
+namespace {
+
+TEST(RunAssessment, NonFiniteMotionStopsTheRunAndMarksItFailed) {
+  // a constant-pressure box (A only: no contact period to refuse on) of the smallest positive
+  // mass: its first contact force accelerates it to infinity
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  const Stiffness a_only = StiffnessFrom2D(300.0 * units::PoundPerInchPow(1), 0.0, 30.0 * units::kInch);
+  s.bodies[0].stiffness.fill(a_only);
+  auto models = BuildBodyModels(s);
+  const BodyModel& car = *models[0];
+  models[0] = std::make_shared<const BodyModel>(MakeBodyModel(car.name, car.mesh, car.stiffness,
+                                                              std::numeric_limits<double>::denorm_min(), car.inertia,
+                                                              car.restitution, car.friction, car.rigid));
+  Simulation sim(s, models, MakeBruteForceLocatorFactory());
+  EXPECT_TRUE(sim.Run());
+  EXPECT_TRUE(sim.failed_numerics());
+  EXPECT_LT(sim.time(), s.duration);
+  EXPECT_TRUE(sim.engine().state(0).rigid.velocity.allFinite());  // the last finite state
+  const Summary summary = Summarize(sim);
+  EXPECT_EQ(summary.status, RunStatus::kFailedNumerics);
+  ASSERT_FALSE(summary.warnings.empty());
+  bool named = false;
+  for (const RunWarning& w : summary.warnings) named = named || w.code == "non_finite";
+  EXPECT_TRUE(named);
+  const std::string json = SummaryToJson(summary, UnitSystem::kUS).dump();
+  EXPECT_EQ(json.find("null"), std::string::npos) << json;
+}
+
+TEST(RunAssessment, OverflowingResultsAreFailedAndStillNumbers) {
+  // 1e-300 kg stays finite in motion (1e302 m/s) but its energies overflow: failed_numerics, and
+  // the summary writes the largest finite magnitudes rather than null
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  s.bodies[0].stiffness.fill(StiffnessFrom2D(300.0 * units::PoundPerInchPow(1), 0.0, 30.0 * units::kInch));
+  auto models = BuildBodyModels(s);
+  const BodyModel& car = *models[0];
+  models[0] = std::make_shared<const BodyModel>(MakeBodyModel(car.name, car.mesh, car.stiffness, 1e-300, car.inertia,
+                                                              car.restitution, car.friction, car.rigid));
+  Simulation sim(s, models, MakeBruteForceLocatorFactory());
+  sim.Run();
+  const Summary summary = Summarize(sim);
+  EXPECT_EQ(summary.status, RunStatus::kFailedNumerics);
+  const std::string json = SummaryToJson(summary, UnitSystem::kUS).dump();
+  EXPECT_EQ(json.find("null"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"failed_numerics\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dymesh
