@@ -29,8 +29,10 @@ void PrintSummary(const Summary& s, UnitSystem system, std::ostream& out) {
     out << Format("  %-16s delta-V %7.2f %s  PDOF %6.1f deg (%2d o'clock)  peak %5.1f g  max crush %6.2f %s\n",
                   b.name.c_str(), b.delta_v * u.speed, u.speed_name, b.pdof_deg, b.pdof_clock,
                   b.peak_accel / units::kStandardGravity, b.max_crush * u.length, u.length_name);
-  out << Format("  contact %.4f-%.4f s, %d steps; energy balance error %.3f%%; node law vs crush work %+.1f%%\n",
-                s.contact_start, s.contact_end, s.steps, 100.0 * s.energy_balance_error,
+  const std::string contact =
+      s.contact_start < 0.0 ? std::string("no contact") : Format("contact %.4f-%.4f s", s.contact_start, s.contact_end);
+  out << Format("  %s, %d steps; energy balance error %.3f%%; node law vs crush work %+.1f%%\n", contact.c_str(),
+                s.steps, 100.0 * s.energy_balance_error,
                 s.crush_energy != 0.0 ? -100.0 * s.energy_discontinuity / s.crush_energy : 0.0);
 }
 

@@ -212,8 +212,10 @@ std::vector<PairPlacement> PlaceBodies(Scenario* scenario, const std::vector<std
       throw InputError(scenario->file, "bodies[" + std::to_string(p.b) + "].initial.position",
                        what + " (deeper than the contact tolerance): move them apart, use \"place_at_contact\", or "
                               "set \"allow_initial_overlap\": true");
-    scenario->warnings.push_back({"initial_overlap", "allow_initial_overlap",
-                                  what + ": the overlap is pushed out in the first steps and its energy is not physical"});
+    scenario->warnings.push_back(
+        {"initial_overlap", "allow_initial_overlap",
+         what + ": an overlap within contact.toofar_maximum is pushed out in the first steps with energy that is not "
+                "physical; a deeper one is not found by the search and the bodies may pass through each other"});
   }
   return placements;
 }
