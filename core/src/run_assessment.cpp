@@ -85,14 +85,15 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                        sc.time_step, g.contact_period, sc.bodies[g.body_a].name.c_str(),
                        sc.bodies[g.body_b].name.c_str(), g.contact_period / sc.time_step, kMinStepsPerContact,
                        g.recommended_step)});
-  // crush deeper than the body is long: the mesh folded through itself
+  // crush deeper than the body is long (x extent): the mesh was pushed through itself
   for (int i = 0; i < sim.engine().body_count(); ++i) {
     const MeshStats m = ComputeStats(sim.engine().model(i).mesh);
-    const double length = (m.max - m.min).maxCoeff();
+    const double length = m.max.x() - m.min.x();
     if (s.bodies[i].max_crush > length)
       w->push_back({"crush_beyond_length", "bodies[" + std::to_string(i) + "]",
-                    Text("\"%s\": maximum crush %.3g m exceeds the body's largest extent %.3g m", s.bodies[i].name.c_str(),
-                         s.bodies[i].max_crush, length)});
+                    Text("\"%s\": maximum crush %.3g m exceeds the body's length %.3g m: the mesh was pushed "
+                         "through itself; the crush law or the stiffness does not fit this body",
+                         s.bodies[i].name.c_str(), s.bodies[i].max_crush, length)});
   }
   if (s.diagnostics.non_finite > 0)
     w->push_back({"non_finite_nodes", "",

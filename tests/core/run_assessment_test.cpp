@@ -58,5 +58,20 @@ TEST(RunAssessment, OverflowingResultsAreFailedAndStillNumbers) {
   EXPECT_NE(json.find("\"failed_numerics\""), std::string::npos);
 }
 
+TEST(RunAssessment, CrushDeeperThanTheBodyIsLongIsWarned) {
+  // a 4 in long 3000 lb slab at 30 mph: the barrier closed form crushes it ~16 in, four times its length
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  s.bodies[0] = testing::BoxVehicle("slab", 4, 66, 30, {1, 22, 10}, 3000, 300, 100, 30, 0.1);
+  s.bodies[0].initial.velocity = Vec3(30.0 * units::kMph, 0, 0);
+  s.bodies[0].initial.position = Vec3(88.0, 0, 0) * units::kInch;  // front 0.5 in from the wall
+  Simulation sim(s, MakeBruteForceLocatorFactory());
+  sim.Run();
+  const Summary summary = Summarize(sim);
+  ASSERT_GT(summary.bodies[0].max_crush, 4.0 * units::kInch);  // past its length
+  bool warned = false;
+  for (const RunWarning& w : summary.warnings) warned = warned || (w.code == "crush_beyond_length" && w.field == "bodies[0]");
+  EXPECT_TRUE(warned);
+}
+
 }  // namespace
 }  // namespace dymesh
