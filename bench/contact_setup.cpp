@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/mesh_import.h"
+#include "dymesh/io/mesh_import.h"
 
 #ifndef DYMESH_DATA_DIR
 #define DYMESH_DATA_DIR "data"

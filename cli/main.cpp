@@ -10,7 +10,7 @@
 
 #include "bench_command.h"
 #include "commands.h"
-#include "dymesh/core/output_folder.h"
+#include "dymesh/io/output_folder.h"
 #include "dymesh/core/scenario.h"
 
 namespace {

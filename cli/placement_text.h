@@ -2,7 +2,7 @@
 #include <string>
 
 #include "dymesh/core/placement.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "format.h"
 
 /// One line per pair of bodies: the gap or overlap at t = 0, in the scenario's units.

@@ -8,11 +8,14 @@
 
 #include "commands.h"
 #include "format.h"
+#include "dymesh/report/output_files.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/scenario_json.h"
 #include "dymesh/accel/brute_force_locator.h"
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/accel/neighbor_box_locator.h"
-#include "dymesh/core/output_folder.h"
-#include "dymesh/core/results.h"
+#include "dymesh/io/output_folder.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/core/units.h"
@@ -81,7 +84,7 @@ int RunCommand(const RunRequest& request, const std::function<int()>& interrupts
   // the thread count changes the speed only (chunked, deterministic reductions)
   std::optional<tbb::global_control> thread_limit;
   if (request.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, request.threads);
-  Simulation sim(scenario, MakeLocatorFactory(request.locator, scenario.contact));
+  Simulation sim(scenario, BuildBodyModels(scenario), MakeLocatorFactory(request.locator, scenario.contact));
   if (request.on_setup_done) request.on_setup_done();
   // simulate, with progress, until done or interrupted
   ProgressReporter::Options options;

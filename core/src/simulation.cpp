@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "dymesh/core/mesh_import.h"
 #include "dymesh/core/placement.h"
 
 namespace dymesh {
@@ -11,48 +10,7 @@ namespace {
 // a body with no collision load for this long after contact has separated
 constexpr double kSeparationWindow = 0.02;  // [s]
 
-// smallest enclosed volume of a deformable body's mesh, relative to its bounds diagonal cubed (a
-// 1 m cube: 0.19; a car shell: ~0.1; a flat sheet: round-off)
-constexpr double kMinEnclosedVolume = 1e-6;
-
-// solid box of the mesh bounds: the inertia used when a scenario gives none
-Mat3 BoxInertia(double mass, const Vec3& size) {
-  const Vec3 sq = size.cwiseProduct(size);
-  return Vec3(sq.y() + sq.z(), sq.x() + sq.z(), sq.x() + sq.y()).asDiagonal() * (mass / 12.0);
-}
-
-// a deformable body crushes into a volume: a sheet (one triangle, a flat panel) has none
-void RefuseFlatMesh(const TriMesh& mesh, const MeshStats& stats, const std::string& file, const std::string& field) {
-  const double diagonal = (stats.max - stats.min).norm();
-  if (std::abs(SignedVolume(mesh)) > kMinEnclosedVolume * diagonal * diagonal * diagonal) return;
-  throw InputError(file, field,
-                   "a deformable body's mesh must enclose a volume; this one (" + std::to_string(stats.triangles) +
-                       " triangles, " + std::to_string(stats.open_edges) +
-                       " open edges) encloses none: give a closed or shell mesh, or set \"rigid\": true");
-}
-
 }  // namespace
-
-std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario) {
-  std::vector<std::shared_ptr<const BodyModel>> models;
-  for (size_t i = 0; i < scenario.bodies.size(); ++i) {
-    const BodySpec& b = scenario.bodies[i];
-    // mesh in body axes, moved so the CG (given, or the bounds centre) is the origin
-    TriMesh mesh = BuildBodyMesh(b.mesh, scenario.file, "bodies[" + std::to_string(i) + "].mesh");
-    const MeshStats stats = ComputeStats(mesh);
-    if (!b.rigid) RefuseFlatMesh(mesh, stats, scenario.file, "bodies[" + std::to_string(i) + "].mesh");
-    const Vec3 cg = b.cg.value_or(0.5 * (stats.min + stats.max));
-    for (Vec3& p : mesh.vertices) p -= cg;
-    const Mat3 inertia = b.inertia_diagonal ? Mat3(b.inertia_diagonal->asDiagonal())
-                                            : BoxInertia(b.mass, stats.max - stats.min);
-    models.push_back(std::make_shared<const BodyModel>(MakeBodyModel(
-        b.name, std::move(mesh), b.stiffness, b.mass, inertia, b.restitution, b.friction, b.rigid)));
-  }
-  return models;
-}
-
-Simulation::Simulation(const Scenario& scenario, const LocatorFactory& make_locator)
-    : Simulation(scenario, BuildBodyModels(scenario), make_locator) {}
 
 Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
                        const LocatorFactory& make_locator)

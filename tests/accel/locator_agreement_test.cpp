@@ -4,13 +4,16 @@
 #include <algorithm>
 #include <random>
 
+#include "dymesh/io/summary_json.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/scenario_json.h"
 #include "dymesh/accel/brute_force_locator.h"
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/accel/neighbor_box_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/core/contact_step.h"
-#include "dymesh/core/mesh_import.h"
+#include "dymesh/io/mesh_import.h"
 
 namespace dymesh {
 namespace {
@@ -105,9 +108,9 @@ TEST(LocatorAgreement, WholeRunIdenticalForAllLocators) {
   std::vector<std::string> summaries;
   std::vector<std::vector<Vec3>> crush;
   for (const LocatorFactory& factory : factories) {
-    Simulation sim(scenario, factory);
+    Simulation sim(scenario, BuildBodyModels(scenario), factory);
     sim.Run();
-    summaries.push_back(SummaryToJson(Summarize(sim), scenario.units).dump());
+    summaries.push_back(SummaryJson(Summarize(sim), scenario, {}));
     crush.push_back(sim.engine().state(1).delta);
     EXPECT_GT(sim.engine().state(1).crush_energy, 0.0);
   }

@@ -1,5 +1,5 @@
 // Six-point crush: damaged face, damage width, stations and C1..C6 on a box with prescribed crush.
-#include "dymesh/core/crush_profile.h"
+#include "dymesh/analysis/crush_profile.h"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 
-#include "dymesh/core/mesh_import.h"
+#include "dymesh/io/mesh_import.h"
 
 namespace dymesh {
 namespace {

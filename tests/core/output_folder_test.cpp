@@ -7,8 +7,8 @@
 #include <fstream>
 #include <thread>
 
-#include "dymesh/core/atomic_file.h"
-#include "dymesh/core/output_folder.h"
+#include "dymesh/io/atomic_file.h"
+#include "dymesh/io/output_folder.h"
 #include "dymesh/core/scenario.h"
 
 namespace dymesh {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "dymesh/io/body_models.h"
 #include "dymesh/core/placement.h"
 #include "dymesh/core/simulation.h"
 #include "test_scenarios.h"

@@ -1,6 +1,7 @@
 // The HTML report without a browser: well-formed (XHTML-safe), self-contained, every plot present,
 // the interrupted banner, units of the scenario. (tests/cli/report_browser_test.cpp renders it.)
-#include "dymesh/core/report.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/report/report.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +18,7 @@ struct FinishedRun {
   Simulation sim;
   Summary summary;
   explicit FinishedRun(const Scenario& s, int steps = 1 << 30)
-      : sim(s, MakeEmbreeLocatorFactory(device)) {
+      : sim(s, BuildBodyModels(s), MakeEmbreeLocatorFactory(device)) {
     sim.Run([&](double) { return sim.steps() < steps; });
     summary = Summarize(sim);
   }

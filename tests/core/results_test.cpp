@@ -1,6 +1,8 @@
 // Output files of a run: every file once, atomically, summary last; stopping between files; the
 // PLY meshes' crush and colours; history.csv's header; the crush profile of a known answer.
-#include "dymesh/core/results.h"
+#include "dymesh/report/output_files.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/analysis/summary.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -23,7 +25,7 @@ class BarrierRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     device_ = std::make_shared<const EmbreeDevice>();
-    sim_ = std::make_unique<Simulation>(testing::BarrierScenario(30.0, 0.0, 0.0005), MakeEmbreeLocatorFactory(device_));
+    sim_ = std::make_unique<Simulation>(testing::BarrierScenario(30.0, 0.0, 0.0005), BuildBodyModels(testing::BarrierScenario(30.0, 0.0, 0.0005)), MakeEmbreeLocatorFactory(device_));
     sim_->Run();
     summary_ = std::make_unique<Summary>(Summarize(*sim_));
   }

@@ -5,9 +5,11 @@
 
 #include <limits>
 
+#include "dymesh/io/summary_json.h"
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/brute_force_locator.h"
-#include "dymesh/core/results.h"
-#include "dymesh/core/run_assessment.h"
+#include "dymesh/analysis/summary.h"
+#include "dymesh/analysis/run_assessment.h"
 #include "dymesh/core/simulation.h"
 #include "test_scenarios.h"
 
@@ -36,7 +38,7 @@ TEST(RunAssessment, NonFiniteMotionStopsTheRunAndMarksItFailed) {
   bool named = false;
   for (const RunWarning& w : summary.warnings) named = named || w.code == "non_finite";
   EXPECT_TRUE(named);
-  const std::string json = SummaryToJson(summary, UnitSystem::kUS).dump();
+  const std::string json = SummaryJson(summary, s, {});
   EXPECT_EQ(json.find("null"), std::string::npos) << json;
 }
 
@@ -53,7 +55,7 @@ TEST(RunAssessment, OverflowingResultsAreFailedAndStillNumbers) {
   sim.Run();
   const Summary summary = Summarize(sim);
   EXPECT_EQ(summary.status, RunStatus::kFailedNumerics);
-  const std::string json = SummaryToJson(summary, UnitSystem::kUS).dump();
+  const std::string json = SummaryJson(summary, s, {});
   EXPECT_EQ(json.find("null"), std::string::npos) << json;
   EXPECT_NE(json.find("\"failed_numerics\""), std::string::npos);
 }
@@ -64,7 +66,7 @@ TEST(RunAssessment, CrushDeeperThanTheBodyIsLongIsWarned) {
   s.bodies[0] = testing::BoxVehicle("slab", 4, 66, 30, {1, 22, 10}, 3000, 300, 100, 30, 0.1);
   s.bodies[0].initial.velocity = Vec3(30.0 * units::kMph, 0, 0);
   s.bodies[0].initial.position = Vec3(88.0, 0, 0) * units::kInch;  // front 0.5 in from the wall
-  Simulation sim(s, MakeBruteForceLocatorFactory());
+  Simulation sim(s, BuildBodyModels(s), MakeBruteForceLocatorFactory());
   sim.Run();
   const Summary summary = Summarize(sim);
   ASSERT_GT(summary.bodies[0].max_crush, 4.0 * units::kInch);  // past its length

@@ -1,5 +1,7 @@
 // Scenario JSON: unit conversion of a good scenario, and one refusal per kind of bad input, each
 // naming the file and the field.
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/scenario_json.h"
 #include "dymesh/core/scenario.h"
 
 #include <gtest/gtest.h>
@@ -9,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "dymesh/core/mesh_import.h"
+#include "dymesh/io/mesh_import.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/core/units.h"
 

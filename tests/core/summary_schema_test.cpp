@@ -10,8 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "dymesh/report/output_files.h"
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "test_scenarios.h"
 
 namespace dymesh {
@@ -105,7 +107,7 @@ Json LoadSchema() {
 // runs a scenario (up to `max_steps` steps, then stopped) and returns the summary.json it writes
 Json RunAndReadSummary(const Scenario& scenario, int max_steps, const std::string& name) {
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
   sim.Run([&](double) { return sim.steps() < max_steps; });
   const fs::path dir = fs::temp_directory_path() / ("dymesh_schema_test_" + name);
   WriteOutputs(sim, Summarize(sim), dir.string());

@@ -1,5 +1,5 @@
 // SVG plots: ticks, decimation, escaping, well-formed output, plan-view scale and mirroring.
-#include "dymesh/core/svg_plot.h"
+#include "dymesh/report/svg_plot.h"
 
 #include <gtest/gtest.h>
 

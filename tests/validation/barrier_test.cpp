@@ -4,8 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 #include "test_scenarios.h"
 
@@ -27,7 +28,7 @@ double ClosedFormCrushIn(double weight_lb, double speed_mph, double width_in, do
 
 Summary RunBarrier(double restitution, double time_step) {
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(testing::BarrierScenario(30.0, restitution, time_step), MakeEmbreeLocatorFactory(device));
+  Simulation sim(testing::BarrierScenario(30.0, restitution, time_step), BuildBodyModels(testing::BarrierScenario(30.0, restitution, time_step)), MakeEmbreeLocatorFactory(device));
   sim.Run();
   return Summarize(sim);
 }

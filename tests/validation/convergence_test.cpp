@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <string>
 
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/scenario_json.h"
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 
 namespace dymesh {
@@ -29,8 +31,8 @@ Outcome Run(Scenario s, bool swap, std::vector<std::shared_ptr<const BodyModel>>
   if (swap) std::swap(s.bodies[0], s.bodies[1]);
   if (swap && !models.empty()) std::swap(models[0], models[1]);
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim = models.empty() ? Simulation(s, MakeEmbreeLocatorFactory(device))
-                                  : Simulation(s, models, MakeEmbreeLocatorFactory(device));
+  if (models.empty()) models = BuildBodyModels(s);
+  Simulation sim(s, models, MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary sum = Summarize(sim);
   Outcome o;

@@ -7,8 +7,11 @@
 
 #include <tbb/global_control.h>
 
+#include "dymesh/io/summary_json.h"
+#include "dymesh/io/scenario_json.h"
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 #include "test_scenarios.h"
 
@@ -59,10 +62,10 @@ struct RunRecord {
 RunRecord RunWithThreads(const Scenario& scenario, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
   sim.Run();
   RunRecord r;
-  r.summary = SummaryToJson(Summarize(sim), scenario.units).dump();
+  r.summary = SummaryJson(Summarize(sim), scenario, {});
   r.history = sim.history();
   for (int i = 0; i < sim.engine().body_count(); ++i) r.vertices.push_back(sim.engine().state(i).vertices);
   r.hash = HashFinalState(sim);

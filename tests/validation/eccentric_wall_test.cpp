@@ -5,8 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 #include "test_scenarios.h"
 
@@ -65,7 +66,7 @@ void ExpectClosedForm(SearchDirection direction, StopRule stop, double time_step
                       const char* label) {
   const Scenario scenario = EccentricScenario(direction, stop, time_step, frame_angle);
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary s = Summarize(sim);
   const ClosedForm expected = ImpulseMomentum(scenario);

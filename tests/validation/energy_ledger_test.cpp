@@ -6,8 +6,10 @@
 #include <cstdio>
 #include <string>
 
+#include "dymesh/io/scenario_json.h"
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 
 namespace dymesh {
@@ -29,7 +31,7 @@ double AngularMomentumZ(const Simulation& sim, const Sample& sample) {
 
 void ExpectLedgerBalances(const Scenario& scenario, const std::string& label) {
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary s = Summarize(sim);
   const double lost = s.kinetic_before - s.kinetic_after;
@@ -68,7 +70,7 @@ TEST(EnergyLedger, PoleDemos) {
   // a rigid pole: fixed bodies take no momentum, so only the energy is checked there
   for (const char* name : {"pole.json", "pole_offset.json"}) {
     auto device = std::make_shared<const EmbreeDevice>();
-    Simulation sim(Demo(name), MakeEmbreeLocatorFactory(device));
+    Simulation sim(Demo(name), BuildBodyModels(Demo(name)), MakeEmbreeLocatorFactory(device));
     sim.Run();
     const Summary s = Summarize(sim);
     const double lost = s.kinetic_before - s.kinetic_after;

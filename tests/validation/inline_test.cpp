@@ -4,8 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 #include "test_scenarios.h"
 
@@ -33,7 +34,7 @@ Scenario InlineScenario(double restitution) {
 
 Summary RunInline(double restitution) {
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(InlineScenario(restitution), MakeEmbreeLocatorFactory(device));
+  Simulation sim(InlineScenario(restitution), BuildBodyModels(InlineScenario(restitution)), MakeEmbreeLocatorFactory(device));
   sim.Run();
   return Summarize(sim);
 }
@@ -72,7 +73,7 @@ TEST(Inline, ThreeBodiesInAChainShareOneMomentum) {
   last.initial.position = Vec3(90.0 + 0.5 + 190.0 + 0.5 + 85.0, 0, 0) * u::kInch;
   s.bodies.push_back(last);
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(s, MakeEmbreeLocatorFactory(device));
+  Simulation sim(s, BuildBodyModels(s), MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary sum = Summarize(sim);
   const double p0 = 3000 * u::kPoundMass * 30 * u::kMph;

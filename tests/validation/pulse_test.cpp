@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <string>
 
+#include "dymesh/io/scenario_json.h"
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/core/simulation.h"
 
@@ -15,7 +17,7 @@ namespace {
 // resultant collision force on body 0 per step [N]
 std::vector<double> ForceSeries(const Scenario& scenario) {
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
   sim.Run();
   std::vector<double> f;
   for (const Sample& s : sim.history()) f.push_back(s.bodies[0].loads.force_earth.norm());

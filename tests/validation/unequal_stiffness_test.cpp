@@ -4,8 +4,9 @@
 
 #include <cstdio>
 
+#include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 #include "test_scenarios.h"
 
@@ -47,7 +48,7 @@ struct Crush {
 
 Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
   auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, MakeEmbreeLocatorFactory(device));
+  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary s = Summarize(sim);
   Crush c{};

@@ -10,7 +10,8 @@
 #include "dymesh/core/run_status.h"
 #include "dymesh/core/stiffness.h"
 
-/// The scenario: what a user writes in JSON, converted to SI and validated at load.
+/// The scenario: a run's definition in SI, as the JSON loader (dymesh/io/scenario_json.h) or a
+/// host fills it.
 namespace dymesh {
 
 /// Unit system of a scenario's numbers (and of its outputs).
@@ -77,17 +78,5 @@ struct Scenario {
   std::vector<BodySpec> bodies;
   std::vector<RunWarning> warnings;  ///< implausible values and accepted oddities found at load
 };
-
-/// Why `path` cannot be read as an input file ("file not found", "a directory, not a file", "a FIFO
-/// (named pipe), not a file", a device, a socket), or "" for a regular file. Never opens it (a FIFO
-/// would block).
-std::string NotARegularFile(const std::string& path);
-
-/// Reads and validates a scenario file; mesh paths are resolved against the file's folder.
-/// Throws InputError naming the file, the field and what was expected.
-Scenario LoadScenario(const std::string& path);
-
-/// Parses scenario JSON text (`file` is used in messages and to resolve relative paths).
-Scenario ParseScenario(const std::string& json_text, const std::string& file);
 
 }  // namespace dymesh

@@ -30,10 +30,9 @@ struct Sample {
 /// A run of a scenario; owns everything it touches (no global state).
 class Simulation {
  public:
-  Simulation(const Scenario& scenario, const LocatorFactory& make_locator);
-
-  /// The same run on body models already built (one per scenario body, in order), e.g. shared
-  /// between runs or prepared by the caller; the scenario's mesh sources are not read.
+  /// A run on body models already built (one per scenario body, in order: BuildBodyModels of
+  /// dymesh/io/body_models.h, or the host's own), shared read-only between runs; the scenario's
+  /// mesh sources are not read.
   /// Throws InputError (field time.step) when the step is beyond the stable limit of the stiffest
   /// pair (GuideTimeStep).
   Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
@@ -85,8 +84,5 @@ class Simulation {
   TimeStepGuide guide_;
   std::vector<PairPlacement> placements_;
 };
-
-/// Loads the meshes of a scenario and builds the body models (shared, immutable).
-std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario);
 
 }  // namespace dymesh

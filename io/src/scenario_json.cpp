@@ -1,4 +1,4 @@
-#include "dymesh/core/scenario.h"
+#include "dymesh/io/scenario_json.h"
 
 #include <nlohmann/json.hpp>
 

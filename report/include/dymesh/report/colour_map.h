@@ -4,14 +4,11 @@
 #include <cstdio>
 #include <string>
 
+#include "dymesh/io/rgb.h"
+
 /// The crush colour map shared by the report's views and the PLY meshes: grey where a vertex has no
 /// permanent crush, then pale yellow through orange and red to dark red at the largest crush.
 namespace dymesh {
-
-/// An sRGB colour, 8 bits per channel.
-struct Rgb {
-  std::uint8_t r = 0, g = 0, b = 0;
-};
 
 /// Colour of an uncrushed vertex.
 inline constexpr Rgb kNoCrushColour{208, 208, 208};

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "dymesh/core/outline.h"
-#include "dymesh/core/svg_plot.h"
+#include "dymesh/analysis/outline.h"
+#include "dymesh/report/svg_plot.h"
 #include "dymesh/core/units.h"
 #include "report_parts.h"
 
@@ -133,12 +133,9 @@ struct Instant {
 // maximum engagement: the sample of the contact window where the first pair has approached most
 // along the impulse on body 0 (the common-velocity instant)
 std::size_t MaxEngagement(const Context& c, std::size_t first, std::size_t last) {
-  const Simulation& sim = c.sim;
-  const std::vector<Sample>& h = sim.history();
-  Vec3 impulse = Vec3::Zero();
-  for (const Sample& s : h) impulse += s.bodies[0].loads.force_earth;
-  if (sim.engine().body_count() < 2 || impulse.norm() == 0.0) return first;
-  const Vec3 n = impulse.normalized();
+  const std::vector<Sample>& h = c.sim.history();
+  const Vec3& n = c.summary.collision_direction;
+  if (c.sim.engine().body_count() < 2 || n.norm() == 0.0) return first;
   std::size_t best = first;
   double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t k = first; k <= last; ++k) {

@@ -1,4 +1,4 @@
-#include "dymesh/core/crush_profile.h"
+#include "dymesh/analysis/crush_profile.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "dymesh/core/run_assessment.h"
+#include "dymesh/analysis/run_assessment.h"
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 
 namespace dymesh {

@@ -1,4 +1,4 @@
-#include "dymesh/core/memory_budget.h"
+#include "dymesh/io/memory_budget.h"
 
 #include <unistd.h>
 

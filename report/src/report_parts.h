@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 
 namespace dymesh::report {
 

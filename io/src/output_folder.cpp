@@ -1,4 +1,4 @@
-#include "dymesh/core/output_folder.h"
+#include "dymesh/io/output_folder.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "dymesh/core/atomic_file.h"
+#include "dymesh/io/atomic_file.h"
 #include "dymesh/core/scenario.h"
 
 namespace dymesh {

@@ -1,4 +1,4 @@
-#include "dymesh/core/outline.h"
+#include "dymesh/analysis/outline.h"
 
 #include <algorithm>
 

@@ -1,12 +1,12 @@
-#include "dymesh/core/report.h"
+#include "dymesh/report/report.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 
-#include "dymesh/core/colour_map.h"
-#include "dymesh/core/svg_plot.h"
+#include "dymesh/report/colour_map.h"
+#include "dymesh/report/svg_plot.h"
 #include "dymesh/core/units.h"
 #include "report_parts.h"
 

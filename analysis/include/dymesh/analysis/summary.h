@@ -1,26 +1,14 @@
 #pragma once
-#include <functional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "dymesh/core/crush_profile.h"
+#include "dymesh/analysis/crush_profile.h"
+#include "dymesh/analysis/output_units.h"
 #include "dymesh/core/run_status.h"
 #include "dymesh/core/simulation.h"
 
 /// What a run reports: per-body delta-V, PDOF, pulse, crush and energy; overall balances.
 namespace dymesh {
-
-/// Output units of a unit system: the factor from SI and the label of each quantity
-/// (US: in, mph, lbf, lbf*in, ft*lbf, lbf*s, lb; SI: m, m/s, N, N*m, J, kg*m/s, kg).
-struct OutputUnits {
-  double length, speed, force, moment, energy, momentum, mass;
-  const char *length_name, *speed_name, *force_name, *moment_name, *energy_name, *momentum_name, *mass_name;
-};
-
-/// The output units of `system`.
-OutputUnits UnitsOf(UnitSystem system);
 
 /// Results of one body.
 struct BodySummary {
@@ -53,6 +41,7 @@ struct Summary {
   double law_energy = 0.0;            ///< [J] node-law work, all bodies
   double energy_discontinuity = 0.0;  ///< [J] ledger crush work - node-law work
   double energy_balance_error = 0.0;  ///< (KE lost - crush - friction) / KE lost
+  Vec3 collision_direction{0, 0, 0};  ///< unit earth-frame impulse on body 0 (zero without contact)
   double closing_speed = 0.0;         ///< [m/s] along the impulse direction (first pair)
   double separation_speed = 0.0;      ///< [m/s] along the impulse direction (first pair)
   double contact_start = -1.0, contact_end = -1.0;  ///< [s]
@@ -63,28 +52,14 @@ struct Summary {
   ContactDiagnostics diagnostics;
 };
 
-/// Computes the summary from a finished run.
+/// Computes the summary from a finished (or stopped) run.
 Summary Summarize(const Simulation& sim);
 
-/// Summary as JSON in the scenario's unit system.
-nlohmann::json SummaryToJson(const Summary& summary, UnitSystem units);
-
-/// The plain names of the files WriteOutputs writes for `scenario`, in writing order: per body
-/// NAME_undeformed.obj/.ply and NAME_deformed.obj/.ply, then history.csv, report.html, summary.json.
-std::vector<std::string> OutputFileNames(const Scenario& scenario);
-
-/// Which output files were written and which were not (when writing was stopped).
-struct WrittenOutputs {
-  std::vector<std::string> written, not_written;  ///< paths
-};
-
-/// Writes into `dir`: each body's deformed and undeformed mesh (OBJ, and PLY with the permanent
-/// crush per vertex), history.csv, report.html and, last, summary.json; each through a temporary
-/// name renamed into place. An earlier summary.json is removed first, so its presence always means
-/// that the files beside it belong to it. `stop`, when given, is asked before each file: once it
-/// returns true the remaining files are skipped (listed in `not_written`).
-WrittenOutputs WriteOutputs(const Simulation& sim, const Summary& summary, const std::string& dir,
-                            const std::function<bool()>& stop = {});
+/// The collision impulse on body `body` over the recorded history [N s]: the one definition the
+/// summary (PDOF, closing speed) and the report (maximum engagement) use. Earth frame, or body frame
+/// (the body-frame loads of each step summed: the PDOF's frame).
+Vec3 EarthImpulse(const Simulation& sim, int body);
+Vec3 BodyFrameImpulse(const Simulation& sim, int body);
 
 /// Permanent crush |Delta| of every vertex of body i [m].
 std::vector<double> VertexCrush(const Simulation& sim, int body);

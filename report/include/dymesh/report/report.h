@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "dymesh/core/results.h"
+#include "dymesh/analysis/summary.h"
 
 /// The HTML report of a run: one self-contained file (no scripts, fonts or network) that also
 /// parses as XHTML, with inline SVG drawn by the engine: acceleration pulses, delta-V with PDOF,

@@ -2,9 +2,9 @@
 #include <string>
 #include <vector>
 
-#include "dymesh/core/colour_map.h"
 #include "dymesh/core/mesh.h"
 #include "dymesh/core/scenario.h"
+#include "dymesh/io/rgb.h"
 
 /// Mesh files in (assimp: OBJ, STL, PLY, glTF, ...) and out (OBJ, PLY), and a body's mesh from its source.
 namespace dymesh {

@@ -1,4 +1,4 @@
-#include "dymesh/core/atomic_file.h"
+#include "dymesh/io/atomic_file.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

@@ -1,7 +1,8 @@
-#include "dymesh/core/mesh_import.h"
+#include "dymesh/io/mesh_import.h"
 
-#include "dymesh/core/atomic_file.h"
-#include "dymesh/core/memory_budget.h"
+#include "dymesh/io/atomic_file.h"
+#include "dymesh/io/memory_budget.h"
+#include "dymesh/io/scenario_json.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>

@@ -1,11 +1,11 @@
-#include "dymesh/core/svg_plot.h"
+#include "dymesh/report/svg_plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "dymesh/core/colour_map.h"
+#include "dymesh/report/colour_map.h"
 
 namespace dymesh {
 namespace {

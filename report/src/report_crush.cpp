@@ -3,8 +3,8 @@
 #include <limits>
 #include <numeric>
 
-#include "dymesh/core/outline.h"
-#include "dymesh/core/svg_plot.h"
+#include "dymesh/analysis/outline.h"
+#include "dymesh/report/svg_plot.h"
 #include "report_parts.h"
 
 namespace dymesh::report {

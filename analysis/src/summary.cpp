@@ -1,0 +1,117 @@
+#include "dymesh/analysis/summary.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dymesh/analysis/run_assessment.h"
+
+namespace dymesh {
+
+Vec3 EarthImpulse(const Simulation& sim, int body) {
+  Vec3 impulse = Vec3::Zero();
+  for (const Sample& s : sim.history()) impulse += s.bodies[body].loads.force_earth * sim.scenario().time_step;
+  return impulse;
+}
+
+Vec3 BodyFrameImpulse(const Simulation& sim, int body) {
+  Vec3 impulse = Vec3::Zero();
+  for (const Sample& s : sim.history()) impulse += s.bodies[body].loads.force_body * sim.scenario().time_step;
+  return impulse;
+}
+
+std::vector<double> VertexCrush(const Simulation& sim, int body) {
+  const BodyState& state = sim.engine().state(body);
+  std::vector<double> crush(state.delta.size());
+  for (std::size_t v = 0; v < crush.size(); ++v) crush[v] = state.delta[v].norm();
+  return crush;
+}
+
+namespace {
+
+BodySummary SummarizeBody(const Simulation& sim, int i) {
+  const BodyModel& model = sim.engine().model(i);
+  const BodyState& state = sim.engine().state(i);
+  const RigidState& first = sim.history().front().bodies[i].rigid;
+  BodySummary b;
+  b.name = model.name;
+  // delta-V of the CG, in the earth frame and in the body axes at t = 0
+  b.delta_v_earth = state.rigid.velocity - first.velocity;
+  b.delta_v_body = first.Rotation().transpose() * b.delta_v_earth;
+  b.delta_v = b.delta_v_earth.norm();
+  // PDOF: direction the collision force comes from, 0 deg frontal, +90 deg from the right (SAE)
+  const Vec3 impulse = BodyFrameImpulse(sim, i);
+  b.pdof_deg = impulse.head<2>().norm() > 0.0 ? std::atan2(-impulse.y(), -impulse.x()) * kRadToDeg : 0.0;
+  const int clock = static_cast<int>(std::lround((b.pdof_deg < 0 ? b.pdof_deg + 360.0 : b.pdof_deg) / 30.0)) % 12;
+  b.pdof_clock = clock == 0 ? 12 : clock;
+  // pulse: peak resultant acceleration, average over the contact duration
+  for (const Sample& s : sim.history()) b.peak_accel = std::max(b.peak_accel, s.bodies[i].accel_body.norm());
+  const double duration = sim.last_contact_time() - sim.first_contact_time();
+  b.average_accel = duration > 0.0 ? b.delta_v / duration : 0.0;
+  // crush: largest permanent and dynamic deformation, and where
+  for (size_t v = 0; v < state.delta.size(); ++v) {
+    const double crush = state.delta[v].norm();
+    if (crush > b.max_crush) {
+      b.max_crush = crush;
+      b.max_crush_vertex = static_cast<int>(v);
+      b.max_crush_location = model.mesh.vertices[v];
+    }
+    b.max_dynamic_crush = std::max(b.max_dynamic_crush, state.delta_max[v]);
+  }
+  b.crush_energy = state.crush_energy;
+  b.law_energy = state.law_energy;
+  b.friction_energy = state.friction_energy;
+  b.final_velocity = state.rigid.velocity;
+  b.final_yaw_rate = state.rigid.omega.z();
+  b.crush_profile = MeasureCrushProfile(model, state);
+  return b;
+}
+
+
+}  // namespace
+
+Summary Summarize(const Simulation& sim) {
+  Summary sum;
+  const ContactEngine& engine = sim.engine();
+  const Sample& first = sim.history().front();
+  for (int i = 0; i < engine.body_count(); ++i) {
+    sum.bodies.push_back(SummarizeBody(sim, i));
+    // momentum and energy of the bodies that move (fixed barriers have no mass here)
+    const BodyModel& model = engine.model(i);
+    if (sim.scenario().bodies[i].motion == MotionModel::kFixed) continue;
+    sum.momentum_before += model.mass * first.bodies[i].rigid.velocity;
+    sum.momentum_after += model.mass * engine.state(i).rigid.velocity;
+    sum.kinetic_before += KineticEnergy(model, first.bodies[i].rigid);
+    sum.kinetic_after += KineticEnergy(model, engine.state(i).rigid);
+  }
+  for (const BodySummary& b : sum.bodies) {
+    sum.crush_energy += b.crush_energy;
+    sum.friction_energy += b.friction_energy;
+    sum.law_energy += b.law_energy;
+  }
+  sum.energy_discontinuity = sum.crush_energy - sum.law_energy;
+  const double lost = sum.kinetic_before - sum.kinetic_after;
+  sum.energy_balance_error = lost != 0.0 ? (lost - sum.crush_energy - sum.friction_energy) / lost : 0.0;
+  // closing and separation speed of the first pair along the impulse on body 0
+  if (engine.body_count() >= 2) {
+    const Vec3 impulse = EarthImpulse(sim, 0);
+    if (impulse.norm() > 0.0) {
+      const Vec3 n = impulse.normalized();
+      sum.collision_direction = n;
+      const Vec3 before = first.bodies[0].rigid.velocity - first.bodies[1].rigid.velocity;
+      const Vec3 after = engine.state(0).rigid.velocity - engine.state(1).rigid.velocity;
+      sum.closing_speed = -before.dot(n);
+      sum.separation_speed = after.dot(n);
+    }
+  }
+  sum.contact_start = sim.first_contact_time();
+  sum.contact_end = sim.last_contact_time();
+  sum.steps = sim.steps();
+  sum.end_time = sim.time();
+  sum.diagnostics = sim.diagnostics();
+  const RunAssessment assessment = AssessRun(sim, sum);
+  sum.status = assessment.status;
+  sum.warnings = assessment.warnings;
+  return sum;
+}
+
+}  // namespace dymesh

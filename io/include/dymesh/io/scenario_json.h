@@ -1,0 +1,21 @@
+#pragma once
+#include <string>
+
+#include "dymesh/core/scenario.h"
+
+/// Scenario files: JSON in US or SI units, converted to SI and validated at load.
+namespace dymesh {
+
+/// Why `path` cannot be read as an input file ("file not found", "a directory, not a file", "a FIFO
+/// (named pipe), not a file", a device, a socket), or "" for a regular file. Never opens it (a FIFO
+/// would block).
+std::string NotARegularFile(const std::string& path);
+
+/// Reads and validates a scenario file; mesh paths are resolved against the file's folder.
+/// Throws InputError naming the file, the field and what was expected.
+Scenario LoadScenario(const std::string& path);
+
+/// Parses scenario JSON text (`file` is used in messages and to resolve relative paths).
+Scenario ParseScenario(const std::string& json_text, const std::string& file);
+
+}  // namespace dymesh
