@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# cmake --install into a fresh prefix, then configure, build and run the consumer projects against it
+# (C++: find_package + dymesh::core dymesh::accel; C: dymesh::c and pkg-config). Args: build dir, source dir.
+set -euo pipefail
+build="$1"
+source="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
+for consumer in "$source"/tests/install/*_consumer; do
+  name="$(basename "$consumer")"
+  cmake -S "$consumer" -B "$work/$name" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release > "$work/$name.log"
+  cmake --build "$work/$name" -j2 >> "$work/$name.log"
+  "$work/$name/consumer"
+done
