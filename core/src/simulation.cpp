@@ -1,6 +1,8 @@
 #include "dymesh/core/simulation.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "dymesh/core/placement.h"
 
@@ -42,8 +44,7 @@ bool Simulation::Advance() {
   const double dt = scenario_.time_step;
   // contact step at the current poses, then the rigid-body host integrates every body
   const StepResult step = engine_->Step(dt);
-  bool in_contact = false;
-  if (!Integrate(step, dt, &in_contact)) {
+  if (!Integrate(step, dt)) {
     // a non-finite pose or velocity: keep the last finite state and stop
     failed_numerics_ = true;
     finished_ = true;
@@ -54,10 +55,7 @@ bool Simulation::Advance() {
   diagnostics_.Add(step.diagnostics);
   ++steps_;
   time_ = steps_ * dt;
-  if (in_contact) {
-    if (first_contact_time_ < 0.0) first_contact_time_ = time_ - dt;
-    last_contact_time_ = time_;
-  }
+  NoteContact(step, dt);
   Record(&step);
   // stop at the duration, or once contact has been over for the separation window
   separated_ = scenario_.stop_at_separation && last_contact_time_ >= 0.0 &&
@@ -66,7 +64,7 @@ bool Simulation::Advance() {
   return !finished_;
 }
 
-bool Simulation::Integrate(const StepResult& step, double dt, bool* in_contact) {
+bool Simulation::Integrate(const StepResult& step, double dt) {
   // every body's new state first; none is set unless all are finite
   std::vector<RigidState> next;
   for (int i = 0; i < engine_->body_count(); ++i) {
@@ -81,10 +79,59 @@ bool Simulation::Integrate(const StepResult& step, double dt, bool* in_contact) 
                         std::isfinite(rigid.roll + rigid.pitch + rigid.yaw) && loads.force_earth.allFinite();
     if (!finite) return false;
     next.push_back(rigid);
-    *in_contact = *in_contact || loads.force_earth.squaredNorm() > 0.0;
   }
   for (int i = 0; i < engine_->body_count(); ++i) engine_->SetRigidState(i, next[i]);
   return true;
+}
+
+StepResult Simulation::HostStep(const std::vector<RigidState>& states, double dt) {
+  if (finished_) throw std::logic_error("HostStep: the run is finished");
+  if (!(dt > 0.0) || !std::isfinite(dt)) throw std::invalid_argument("HostStep: dt must be finite and > 0");
+  AcceptHostStates(states);
+  // the contact step at the host's poses; the host integrates its loads
+  StepResult step = engine_->Step(dt);
+  diagnostics_.Add(step.diagnostics);
+  // time as the engine's own host counts it while the step stays the same (no round-off drift)
+  if (steps_ == 0) host_step_ = dt;
+  if (dt != host_step_) host_step_ = 0.0;
+  ++steps_;
+  time_ = host_step_ > 0.0 ? steps_ * dt : time_ + dt;
+  NoteContact(step, dt);
+  host_pending_ = std::make_unique<StepResult>(step);
+  return step;
+}
+
+void Simulation::FinishHostRun(const std::vector<RigidState>& states) {
+  if (finished_) throw std::logic_error("FinishHostRun: the run is finished");
+  AcceptHostStates(states);
+  finished_ = true;
+}
+
+void Simulation::AcceptHostStates(const std::vector<RigidState>& states) {
+  if (static_cast<int>(states.size()) != engine_->body_count())
+    throw std::invalid_argument("expected " + std::to_string(engine_->body_count()) + " body states, got " +
+                                std::to_string(states.size()));
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const RigidState& r = states[i];
+    if (!r.position.allFinite() || !r.velocity.allFinite() || !r.omega.allFinite() ||
+        !std::isfinite(r.roll + r.pitch + r.yaw))
+      throw std::invalid_argument("body " + std::to_string(i) + ": non-finite pose or velocity");
+  }
+  for (int i = 0; i < engine_->body_count(); ++i) engine_->SetRigidState(i, states[i]);
+  // the previous step ends here: book its work and record it
+  if (host_pending_) {
+    engine_->AccountWork();
+    Record(host_pending_.get());
+    host_pending_.reset();
+  }
+}
+
+void Simulation::NoteContact(const StepResult& step, double dt) {
+  bool in_contact = false;
+  for (const CgLoads& loads : step.loads) in_contact = in_contact || loads.force_earth.squaredNorm() > 0.0;
+  if (!in_contact) return;
+  if (first_contact_time_ < 0.0) first_contact_time_ = time_ - dt;
+  last_contact_time_ = time_;
 }
 
 void Simulation::Record(const StepResult* step) {

@@ -45,6 +45,18 @@ class Simulation {
   /// Advances one step; returns false once finished.
   bool Advance();
 
+  /// Force-provider mode (how DyMESH sits inside a host's own vehicle dynamics, as in HVE's SIMON):
+  /// `states` are every body's pose and velocities now, as the host integrated them; returns the
+  /// collision loads at each CG for the coming step of length `dt` and updates crush. The step
+  /// before is recorded with these states (history, energy ledger), so the summary, the report and
+  /// the outputs work from a host-driven run. Throws std::invalid_argument for a count that is not
+  /// the body count, a non-finite state or dt <= 0, and std::logic_error once finished.
+  StepResult HostStep(const std::vector<RigidState>& states, double dt);
+
+  /// Ends a host-driven run with the states the host reached after the last step (recorded, its
+  /// contact work booked); the run is then finished.
+  void FinishHostRun(const std::vector<RigidState>& states);
+
   const Scenario& scenario() const { return scenario_; }
   const ContactEngine& engine() const { return *engine_; }
   const std::vector<Sample>& history() const { return history_; }
@@ -70,7 +82,9 @@ class Simulation {
 
  private:
   void Record(const StepResult* step);
-  bool Integrate(const StepResult& step, double dt, bool* in_contact);
+  bool Integrate(const StepResult& step, double dt);
+  void AcceptHostStates(const std::vector<RigidState>& states);
+  void NoteContact(const StepResult& step, double dt);
 
   Scenario scenario_;
   std::unique_ptr<ContactEngine> engine_;
@@ -81,6 +95,8 @@ class Simulation {
   double time_ = 0.0;
   double first_contact_time_ = -1.0, last_contact_time_ = -1.0;
   bool finished_ = false, failed_numerics_ = false, separated_ = false;
+  std::unique_ptr<StepResult> host_pending_;  // force-provider mode: the step the host is integrating
+  double host_step_ = 0.0;                    // force-provider mode: the step length while it is uniform
   TimeStepGuide guide_;
   std::vector<PairPlacement> placements_;
 };
