@@ -20,5 +20,7 @@ write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/dymeshConfigVersion
                                  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/dymeshConfig.cmake ${CMAKE_CURRENT_BINARY_DIR}/dymeshConfigVersion.cmake
         DESTINATION ${DYMESH_CMAKE_DIR})
+# relocatable: the prefix is found from the .pc file's own folder, wherever the prefix is installed
+file(RELATIVE_PATH DYMESH_PC_TO_PREFIX ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
 configure_file(${CMAKE_CURRENT_LIST_DIR}/dymesh.pc.in ${CMAKE_CURRENT_BINARY_DIR}/dymesh.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/dymesh.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

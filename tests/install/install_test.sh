@@ -13,3 +13,8 @@ for consumer in "$source"/tests/install/*_consumer; do
   cmake --build "$work/$name" -j2 >> "$work/$name.log"
   "$work/$name/consumer"
 done
+# the C ABI through pkg-config, as a Makefile host would use it
+libdir="$(dirname "$(find "$work/prefix" -name dymesh.pc)")"
+export PKG_CONFIG_PATH="$libdir"
+cc -std=c99 -o "$work/pkg_consumer" "$source/tests/install/c_consumer/main.c" $(pkg-config --cflags --libs dymesh)
+LD_LIBRARY_PATH="$(pkg-config --variable=libdir dymesh)" "$work/pkg_consumer"

@@ -1,0 +1,183 @@
+/* dymesh.h: the stable C ABI of the DyMESH contact engine (C99; every name starts with dm_).
+ *
+ * Conventions (Embree-style):
+ * - Opaque handles (dm_world); every call returns a dm_status (DM_OK = 0) unless it only reads a
+ *   count; on failure dm_last_error() gives a message for the calling thread. No exception crosses
+ *   this boundary.
+ * - Every entry point checks its arguments: null pointers, body indices out of range, non-finite
+ *   states, dt <= 0 and counts that do not match the world are refused with DM_ERROR_ARGUMENT.
+ * - Definition structs begin with struct_size (set it to sizeof the struct): later versions append
+ *   fields and accept older sizes.
+ * - Views (const pointers into the engine) are read-only and valid until the next call that
+ *   changes the world (step, run, host step, destroy); the dm_..._copy variants write into memory
+ *   the host owns.
+ * - Units: SI (m, kg, s, rad, N) everywhere, except where a call says "in the scenario's units".
+ *   Earth frame SAE: x forward, y right, z down; body axes likewise, about the CG.
+ *
+ * Two ways to use it:
+ * - World mode: dm_world_load_scenario (or dm_world_create from arrays), dm_world_run or
+ *   dm_world_step, then read states, delta-V, crush and the summary JSON text.
+ * - Force-provider mode (how DyMESH sits inside a host's vehicle dynamics): each collision step,
+ *   dm_world_host_step passes every body's pose and velocities and returns the force and moment at
+ *   each CG in the body frame, updating crush; dm_world_host_finish ends the run. The summary,
+ *   delta-V and outputs then describe the host-driven run.
+ */
+#ifndef DYMESH_DYMESH_H
+#define DYMESH_DYMESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Exported from libdymesh_c.so (everything else in it is hidden). */
+#if defined(__GNUC__) || defined(__clang__)
+#define DM_API __attribute__((visibility("default")))
+#else
+#define DM_API
+#endif
+
+/** ABI version: bumped when a signature or a struct layout changes incompatibly. */
+#define DM_ABI_VERSION 1u
+
+typedef enum dm_status {
+  DM_OK = 0,
+  DM_ERROR_ARGUMENT = 1, /**< a null pointer, an index out of range, a non-finite value, a wrong count */
+  DM_ERROR_INPUT = 2,    /**< a scenario, mesh or definition refused (message: file, field, what was expected) */
+  DM_ERROR_STATE = 3,    /**< the call does not fit the world's state (e.g. stepping a finished run) */
+  DM_ERROR_IO = 4,       /**< a file could not be written */
+  DM_ERROR_INTERNAL = 5  /**< anything else (out of memory, a bug): the message says what */
+} dm_status;
+
+/** How a run ended (summary.json "status"). */
+typedef enum dm_run_status {
+  DM_RUN_COMPLETE = 0,
+  DM_RUN_ENDED_IN_CONTACT = 1,
+  DM_RUN_INTERRUPTED = 2, /**< not finished yet, or stopped early */
+  DM_RUN_FAILED_NUMERICS = 3
+} dm_run_status;
+
+typedef struct dm_world dm_world;
+
+/** Pose and velocities of one body (earth frame; omega in body axes). */
+typedef struct dm_body_state {
+  double position[3]; /**< [m] CG */
+  double roll, pitch, yaw; /**< [rad] */
+  double velocity[3]; /**< [m/s] CG, earth frame */
+  double omega[3];    /**< [rad/s] p, q, r, body frame */
+} dm_body_state;
+
+/** Collision loads at one body's CG over a step. */
+typedef struct dm_loads {
+  double force_body[3];  /**< [N] body frame */
+  double moment_body[3]; /**< [N m] about the CG, body frame */
+  double force_earth[3]; /**< [N] earth frame */
+} dm_loads;
+
+/** One body built from arrays (dm_world_create). */
+typedef struct dm_body_desc {
+  size_t struct_size;      /**< sizeof(dm_body_desc) */
+  const char* name;        /**< used in the summary and output file names */
+  const double* vertices;  /**< [m] x, y, z per vertex, body axes about the CG */
+  int32_t vertex_count;
+  const int32_t* triangles; /**< three vertex indices per triangle, wound outward */
+  int32_t triangle_count;
+  double mass;              /**< [kg]; ignored for a fixed body */
+  double inertia[3];        /**< [kg m^2] Ixx, Iyy, Izz about the CG */
+  double stiffness_a;       /**< [N/m^2] 3-D A (per area), every surface */
+  double stiffness_b;       /**< [N/m^3] 3-D B (per area), every surface */
+  double restitution;       /**< [0, 1] */
+  double friction;          /**< >= 0 */
+  int32_t rigid;            /**< nonzero: takes no crush */
+  int32_t fixed;            /**< nonzero: does not move */
+  dm_body_state initial;
+} dm_body_desc;
+
+/** The run as a whole (dm_world_create). */
+typedef struct dm_world_desc {
+  size_t struct_size;        /**< sizeof(dm_world_desc) */
+  double time_step;          /**< [s] */
+  double duration;           /**< [s] */
+  int32_t stop_at_separation; /**< nonzero: end 0.02 s after the last contact force */
+  int32_t passes_per_step;    /**< master/slave passes per step (0: the default, 2) */
+} dm_world_desc;
+
+/** The ABI version this library was built with (DM_ABI_VERSION); compare it with the header's. */
+DM_API uint32_t dm_abi_version(void);
+
+/** The message of the calling thread's last failure ("" when none); valid until its next call. */
+DM_API const char* dm_last_error(void);
+
+/** Limits the worker threads of every world (0: all cores). Results do not depend on it. */
+DM_API dm_status dm_set_threads(int32_t threads);
+
+/* ---- world mode ---------------------------------------------------------------------------- */
+
+/** Loads and validates a scenario file and its meshes (as `dymesh check` does). */
+DM_API dm_status dm_world_load_scenario(const char* path, dm_world** out);
+
+/** Builds a world from arrays (SI units); `bodies` holds `body_count` descriptions. */
+DM_API dm_status dm_world_create(const dm_world_desc* world, const dm_body_desc* bodies, int32_t body_count, dm_world** out);
+
+/** Runs to the end (duration or separation). */
+DM_API dm_status dm_world_run(dm_world* w);
+
+/** One step; *finished is set nonzero once the run has ended. */
+DM_API dm_status dm_world_step(dm_world* w, int32_t* finished);
+
+DM_API int32_t dm_world_body_count(const dm_world* w); /**< -1 for a null world */
+DM_API dm_status dm_world_time(const dm_world* w, double* out_seconds);
+DM_API dm_status dm_world_run_status(const dm_world* w, dm_run_status* out);
+
+/** Body i's name (a view). */
+DM_API dm_status dm_body_name(const dm_world* w, int32_t body, const char** out);
+
+/** Body i's current pose and velocities. */
+DM_API dm_status dm_body_state_get(const dm_world* w, int32_t body, dm_body_state* out);
+
+/** Body i's delta-V since t = 0, earth frame, in the scenario's units (mph or m/s). */
+DM_API dm_status dm_body_delta_v(const dm_world* w, int32_t body, double out_xyz[3]);
+
+/** Body i's current (crushed) vertices, x, y, z per vertex, body frame [m]: a view. */
+DM_API dm_status dm_body_vertices(const dm_world* w, int32_t body, const double** out_xyz, int32_t* out_count);
+
+/** The same, copied into `xyz` (3 * capacity doubles); *out_count receives the vertex count. */
+DM_API dm_status dm_body_copy_vertices(const dm_world* w, int32_t body, double* xyz, int32_t capacity, int32_t* out_count);
+
+/** Body i's permanent deformation Delta per vertex, x, y, z, body frame [m]: a view. */
+DM_API dm_status dm_body_deformation(const dm_world* w, int32_t body, const double** out_xyz, int32_t* out_count);
+
+/** Body i's permanent crush |Delta| per vertex [m], copied into `crush` (capacity values). */
+DM_API dm_status dm_body_copy_crush(const dm_world* w, int32_t body, double* crush, int32_t capacity, int32_t* out_count);
+
+/** The run's summary as JSON text, byte-identical to the summary.json `dymesh run` writes: a view. */
+DM_API dm_status dm_world_summary_json(dm_world* w, const char** out_text);
+
+/** The same, copied into `buffer` (size bytes, with the terminating zero); *needed receives the
+ *  size required (length + 1). DM_ERROR_ARGUMENT when it does not fit. */
+DM_API dm_status dm_world_copy_summary_json(dm_world* w, char* buffer, size_t size, size_t* needed);
+
+/** Writes the run's outputs (meshes, history.csv, report.html, summary.json) into `dir`. */
+DM_API dm_status dm_world_write_outputs(dm_world* w, const char* dir);
+
+/** A hash of every body's final state (rigid state and vertices), equal at any thread count. */
+DM_API dm_status dm_world_state_hash(const dm_world* w, uint64_t* out);
+
+DM_API void dm_world_destroy(dm_world* w);
+
+/* ---- force-provider mode ------------------------------------------------------------------- */
+
+/** Every body's state now (`count` = body count); writes `count` loads for the coming step of
+ *  length dt and updates crush. The host integrates the bodies with the loads. */
+DM_API dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t count, double dt, dm_loads* out_loads);
+
+/** Ends a host-driven run with the states reached after the last step. */
+DM_API dm_status dm_world_host_finish(dm_world* w, const dm_body_state* states, int32_t count);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DYMESH_DYMESH_H */

@@ -1,0 +1,190 @@
+/* The C ABI from plain C99: argument checks and messages, world mode (a scenario file, summary text
+ * byte-identical to the command's summary.json, equal state hashes at 1, 2 and 4 threads), and
+ * force-provider mode (bodies from arrays, a host integrating them with the loads it is given).
+ * Usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR. Prints each failed check; exits 1 if any failed. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dymesh/dymesh.h"
+
+static int failures = 0;
+
+#define CHECK(cond)                                                              \
+  do {                                                                           \
+    if (!(cond)) {                                                               \
+      fprintf(stderr, "%s:%d: check failed: %s (%s)\n", __FILE__, __LINE__, #cond, \
+              dm_last_error());                                                  \
+      ++failures;                                                                \
+    }                                                                            \
+  } while (0)
+
+/* whole file as a malloc'd string (NULL when missing) */
+static char* read_file(const char* path) {
+  FILE* f = fopen(path, "rb");
+  if (!f) return NULL;
+  fseek(f, 0, SEEK_END);
+  long n = ftell(f);
+  fseek(f, 0, SEEK_SET);
+  char* text = malloc((size_t)n + 1);
+  size_t got = fread(text, 1, (size_t)n, f);
+  text[got] = '\0';
+  fclose(f);
+  return text;
+}
+
+static int contains(const char* text, const char* part) { return strstr(text, part) != NULL; }
+
+/* every entry point refuses bad arguments with a status and a message */
+static void test_arguments(const char* scenario) {
+  dm_world* w = NULL;
+  CHECK(dm_abi_version() == DM_ABI_VERSION);
+  CHECK(dm_world_load_scenario(NULL, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "path is null"));
+  CHECK(dm_world_load_scenario("/nonexistent/s.json", &w) == DM_ERROR_INPUT && contains(dm_last_error(), "file not found"));
+  CHECK(w == NULL);
+  CHECK(dm_world_body_count(NULL) == -1);
+  CHECK(dm_world_run(NULL) == DM_ERROR_ARGUMENT);
+  CHECK(dm_world_load_scenario(scenario, &w) == DM_OK && w != NULL);
+  double dv[3];
+  CHECK(dm_body_delta_v(w, 2, dv) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "body 2 is out of range 0..1"));
+  CHECK(dm_body_delta_v(w, -1, dv) == DM_ERROR_ARGUMENT);
+  CHECK(dm_body_delta_v(w, 0, NULL) == DM_ERROR_ARGUMENT);
+  dm_body_state states[2];
+  dm_loads loads[2];
+  CHECK(dm_body_state_get(w, 0, &states[0]) == DM_OK && dm_body_state_get(w, 1, &states[1]) == DM_OK);
+  CHECK(dm_world_host_step(w, states, 1, 0.0005, loads) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "expected 2 body states, got 1"));
+  CHECK(dm_world_host_step(w, states, 2, 0.0, loads) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "dt"));
+  CHECK(dm_world_host_step(w, states, 2, -1.0, loads) == DM_ERROR_ARGUMENT);
+  states[0].velocity[0] = NAN;
+  CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "not finite"));
+  size_t needed = 0;
+  char small[8];
+  CHECK(dm_world_copy_summary_json(w, small, sizeof small, &needed) == DM_ERROR_ARGUMENT && needed > sizeof small);
+  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.2, 1, 2};
+  dm_body_desc one;
+  memset(&one, 0, sizeof one);
+  CHECK(dm_world_create(&desc, &one, 1, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "at least 2 bodies"));
+  dm_world_destroy(w);
+  CHECK(dm_set_threads(-1) == DM_ERROR_ARGUMENT);
+}
+
+/* world mode: the summary text equals the command's summary.json, byte for byte */
+static void test_world_mode(const char* scenario, const char* cli, const char* work) {
+  char command[16384], path[8192];
+  snprintf(command, sizeof command, "%s run \"%s\" --quiet --out \"%s/cli\"", cli, scenario, work);
+  CHECK(system(command) == 0);
+  dm_world* w = NULL;
+  CHECK(dm_world_load_scenario(scenario, &w) == DM_OK);
+  CHECK(dm_world_body_count(w) == 2);
+  CHECK(dm_world_run(w) == DM_OK);
+  dm_run_status status;
+  CHECK(dm_world_run_status(w, &status) == DM_OK && status == DM_RUN_COMPLETE);
+  double dv[3];
+  CHECK(dm_body_delta_v(w, 0, dv) == DM_OK && dv[0] < -30.0 && dv[0] > -40.0); /* mph, about 33 */
+  const char* text = NULL;
+  CHECK(dm_world_summary_json(w, &text) == DM_OK);
+  snprintf(path, sizeof path, "%s/cli/summary.json", work);
+  char* file = read_file(path);
+  CHECK(file != NULL && text != NULL && strcmp(file, text) == 0);
+  free(file);
+  /* the views: vertices and deformation of the car, read-only, as many as the mesh has */
+  const double* xyz = NULL;
+  const double* delta = NULL;
+  int32_t n = 0, m = 0;
+  CHECK(dm_body_vertices(w, 0, &xyz, &n) == DM_OK && n == 4383 && xyz != NULL);
+  CHECK(dm_body_deformation(w, 0, &delta, &m) == DM_OK && m == n);
+  double* crush = malloc(sizeof(double) * (size_t)n);
+  CHECK(dm_body_copy_crush(w, 0, crush, n, &m) == DM_OK && m == n);
+  double largest = 0.0;
+  for (int i = 0; i < n; ++i) largest = crush[i] > largest ? crush[i] : largest;
+  CHECK(largest > 0.4 && largest < 0.6); /* [m] the demo's 20.85 in */
+  free(crush);
+  snprintf(path, sizeof path, "%s/abi", work);
+  CHECK(dm_world_write_outputs(w, path) == DM_OK);
+  dm_world_destroy(w);
+}
+
+/* the same run at 1, 2 and 4 threads: equal state hashes */
+static void test_threads(const char* scenario) {
+  uint64_t hashes[3];
+  const int32_t threads[3] = {1, 2, 4};
+  for (int k = 0; k < 3; ++k) {
+    dm_world* w = NULL;
+    CHECK(dm_set_threads(threads[k]) == DM_OK);
+    CHECK(dm_world_load_scenario(scenario, &w) == DM_OK);
+    CHECK(dm_world_run(w) == DM_OK);
+    CHECK(dm_world_state_hash(w, &hashes[k]) == DM_OK);
+    dm_world_destroy(w);
+  }
+  CHECK(dm_set_threads(0) == DM_OK);
+  CHECK(hashes[0] == hashes[1] && hashes[1] == hashes[2]);
+  printf("state hash 0x%016llx at 1, 2 and 4 threads\n", (unsigned long long)hashes[0]);
+}
+
+/* a closed box of size (lx, ly, lz) about the origin: 8 vertices, 12 triangles wound outward */
+static void make_box(double lx, double ly, double lz, double v[24], int32_t t[36]) {
+  for (int i = 0; i < 8; ++i) {
+    v[3 * i] = (i & 1 ? 0.5 : -0.5) * lx;
+    v[3 * i + 1] = (i & 2 ? 0.5 : -0.5) * ly;
+    v[3 * i + 2] = (i & 4 ? 0.5 : -0.5) * lz;
+  }
+  static const int32_t faces[36] = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                                    2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  memcpy(t, faces, sizeof faces);
+}
+
+/* force-provider mode: the host integrates a box car into a fixed wall with the loads it gets */
+static void test_force_provider(void) {
+  double car_v[24], wall_v[24];
+  int32_t car_t[36], wall_t[36];
+  make_box(4.5, 1.7, 0.8, car_v, car_t);
+  make_box(1.0, 10.0, 2.5, wall_v, wall_t);
+  dm_body_desc bodies[2];
+  memset(bodies, 0, sizeof bodies);
+  bodies[0] = (dm_body_desc){sizeof(dm_body_desc), "car", car_v, 8, car_t, 12, 1500.0, {400, 2500, 2700},
+                             1.0e5, 1.0e6, 0.1, 0.0, 0, 0, {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}};
+  bodies[1] = (dm_body_desc){sizeof(dm_body_desc), "wall", wall_v, 8, wall_t, 12, 0.0, {0, 0, 0},
+                             0.0, 0.0, 0.1, 0.0, 1, 1, {{2.76, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}};
+  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world* w = NULL;
+  CHECK(dm_world_create(&desc, bodies, 2, &w) == DM_OK);
+  if (!w) return;
+  dm_body_state states[2];
+  dm_loads loads[2];
+  CHECK(dm_body_state_get(w, 0, &states[0]) == DM_OK && dm_body_state_get(w, 1, &states[1]) == DM_OK);
+  /* the host: planar semi-implicit Euler on the car, the wall held */
+  double impulse = 0.0;
+  for (int step = 0; step < 600; ++step) {
+    CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_OK);
+    impulse += loads[0].force_earth[0] * 0.0005;
+    states[0].velocity[0] += loads[0].force_earth[0] / 1500.0 * 0.0005;
+    states[0].position[0] += states[0].velocity[0] * 0.0005;
+  }
+  CHECK(dm_world_host_finish(w, states, 2) == DM_OK);
+  CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_ERROR_STATE);
+  /* the engine's delta-V is the host's: impulse / m (SI world: m/s) */
+  double dv[3];
+  CHECK(dm_body_delta_v(w, 0, dv) == DM_OK);
+  CHECK(fabs(dv[0] - impulse / 1500.0) < 1e-9 * 13.4);
+  CHECK(dv[0] < -13.4 && dv[0] > -2 * 13.4); /* stopped and rebounded */
+  const char* text = NULL;
+  CHECK(dm_world_summary_json(w, &text) == DM_OK && contains(text, "\"name\": \"car\""));
+  printf("force provider: delta-V %.3f m/s\n", dv[0]);
+  dm_world_destroy(w);
+}
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    fprintf(stderr, "usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR\n");
+    return 2;
+  }
+  char scenario[4096];
+  snprintf(scenario, sizeof scenario, "%s/scenarios/barrier_frontal.json", argv[1]);
+  test_arguments(scenario);
+  test_world_mode(scenario, argv[2], argv[3]);
+  test_threads(scenario);
+  test_force_provider();
+  if (failures) fprintf(stderr, "%d checks failed\n", failures);
+  return failures ? 1 : 0;
+}
