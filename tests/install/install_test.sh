@@ -18,3 +18,8 @@ libdir="$(dirname "$(find "$work/prefix" -name dymesh.pc)")"
 export PKG_CONFIG_PATH="$libdir"
 cc -std=c99 -o "$work/pkg_consumer" "$source/tests/install/c_consumer/main.c" $(pkg-config --cflags --libs dymesh)
 LD_LIBRARY_PATH="$(pkg-config --variable=libdir dymesh)" "$work/pkg_consumer"
+# the Python module from the prefix's Python path
+if [ -n "$(find "$work/prefix" -name 'dymesh.cpython-*.so')" ]; then
+  PYTHONPATH="$(dirname "$(find "$work/prefix" -name 'dymesh.cpython-*.so')")" /usr/bin/python3 -c \
+    "import dymesh; r = dymesh.load_scenario('$source/data/scenarios/barrier_frontal.json').run(); print('Python from the prefix:', r.status)"
+fi

@@ -1,0 +1,201 @@
+// The Python module `dymesh` (pybind11 + numpy) over the C++ API: scenario runs, their bodies and
+// summary, the force-provider loop, and numpy views of vertices and deformation that keep their run
+// alive. Engine errors become Python exceptions carrying the engine's message.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <tbb/global_control.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dymesh/accel/embree_locator.h"
+#include "dymesh/analysis/summary.h"
+#include "dymesh/core/simulation.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/output_folder.h"
+#include "dymesh/io/scenario_json.h"
+#include "dymesh/io/summary_json.h"
+#include "dymesh/report/output_files.h"
+
+namespace py = pybind11;
+
+namespace {
+
+using dymesh::RigidState;
+using dymesh::Vec3;
+
+// a state row: x, y, z, roll, pitch, yaw, vx, vy, vz, p, q, r (SI, earth frame; rates in body axes)
+constexpr int kStateColumns = 12;
+// a loads row: force (body), moment (body), force (earth)
+constexpr int kLoadColumns = 9;
+
+std::unique_ptr<tbb::global_control> thread_limit;
+
+// one scenario run (world mode, or force-provider mode driven from Python)
+class Run {
+ public:
+  explicit Run(const dymesh::Scenario& scenario)
+      : sim_(scenario, dymesh::BuildBodyModels(scenario),
+             dymesh::MakeEmbreeLocatorFactory(std::make_shared<const dymesh::EmbreeDevice>())) {}
+
+  dymesh::Simulation& sim() { return sim_; }
+  const dymesh::Simulation& sim() const { return sim_; }
+
+  // the summary.json text `dymesh run` writes for this run, byte for byte
+  std::string SummaryJson() const {
+    return dymesh::SummaryJson(dymesh::Summarize(sim_), sim_.scenario(), dymesh::OutputFileNames(sim_.scenario()));
+  }
+
+  // states of every body as an (n, 12) array
+  py::array_t<double> States() const {
+    const int n = sim_.engine().body_count();
+    py::array_t<double> out({n, kStateColumns});
+    auto a = out.mutable_unchecked<2>();
+    for (int i = 0; i < n; ++i) {
+      const RigidState& r = sim_.engine().state(i).rigid;
+      const double row[kStateColumns] = {r.position.x(), r.position.y(), r.position.z(), r.roll, r.pitch, r.yaw,
+                                         r.velocity.x(), r.velocity.y(), r.velocity.z(), r.omega.x(), r.omega.y(),
+                                         r.omega.z()};
+      for (int k = 0; k < kStateColumns; ++k) a(i, k) = row[k];
+    }
+    return out;
+  }
+
+  // an (n, 12) array to states, refused unless it has one row per body
+  std::vector<RigidState> ToStates(const py::array_t<double, py::array::c_style | py::array::forcecast>& states) const {
+    const int n = sim_.engine().body_count();
+    if (states.ndim() != 2 || states.shape(0) != n || states.shape(1) != kStateColumns)
+      throw std::invalid_argument("states: expected an array of shape (" + std::to_string(n) + ", 12), one row per body");
+    auto a = states.unchecked<2>();
+    std::vector<RigidState> out(n);
+    for (int i = 0; i < n; ++i) {
+      out[i].position = Vec3(a(i, 0), a(i, 1), a(i, 2));
+      out[i].roll = a(i, 3), out[i].pitch = a(i, 4), out[i].yaw = a(i, 5);
+      out[i].velocity = Vec3(a(i, 6), a(i, 7), a(i, 8));
+      out[i].omega = Vec3(a(i, 9), a(i, 10), a(i, 11));
+    }
+    return out;
+  }
+
+  // force-provider step: loads (n, 9) for the coming step
+  py::array_t<double> HostStep(const py::array_t<double, py::array::c_style | py::array::forcecast>& states, double dt) {
+    const dymesh::StepResult step = sim_.HostStep(ToStates(states), dt);
+    const int n = sim_.engine().body_count();
+    py::array_t<double> out({n, kLoadColumns});
+    auto a = out.mutable_unchecked<2>();
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) {
+        a(i, k) = step.loads[i].force_body[k];
+        a(i, 3 + k) = step.loads[i].moment_body[k];
+        a(i, 6 + k) = step.loads[i].force_earth[k];
+      }
+    return out;
+  }
+
+ private:
+  dymesh::Simulation sim_;
+};
+
+// a read-only (rows, 3) view into engine memory that keeps `owner` (the Run) alive
+py::array_t<double> View(const std::vector<Vec3>& data, py::handle owner) {
+  py::array_t<double> a({static_cast<py::ssize_t>(data.size()), py::ssize_t{3}},
+                        {static_cast<py::ssize_t>(sizeof(Vec3)), static_cast<py::ssize_t>(sizeof(double))},
+                        data.empty() ? nullptr : data.front().data(), owner);
+  a.attr("setflags")(py::arg("write") = false);
+  return a;
+}
+
+// one body of a run, by index
+struct Body {
+  py::object run;  // keeps the Run alive
+  int index;
+  const dymesh::Simulation& sim() const { return run.cast<const Run&>().sim(); }
+};
+
+int CheckedIndex(const Run& run, int index) {
+  const int n = run.sim().engine().body_count();
+  if (index < 0 || index >= n) throw py::index_error("body " + std::to_string(index) + " is out of range 0.." + std::to_string(n - 1));
+  return index;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(dymesh, m) {
+  m.doc() = "DyMESH mesh-based vehicle collision engine: scenario runs and the force-provider loop";
+  static py::exception<dymesh::InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const dymesh::InputError& e) {
+      input_error(e.what());
+    }
+  });
+
+  m.def("set_threads", [](int threads) {
+    if (threads < 0) throw std::invalid_argument("threads: expected 0 (all cores) or more");
+    thread_limit.reset();
+    if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  }, py::arg("threads"), "Limits the worker threads (0: all cores); results do not depend on it.");
+
+  py::class_<Body>(m, "Body", "One body of a run.")
+      .def_property_readonly("name", [](const Body& b) { return b.sim().engine().model(b.index).name; })
+      .def_property_readonly("delta_v", [](const Body& b) {
+        const dymesh::Simulation& sim = b.sim();
+        const Vec3 dv = (sim.engine().state(b.index).rigid.velocity - sim.history().front().bodies[b.index].rigid.velocity) *
+                        dymesh::UnitsOf(sim.scenario().units).speed;
+        return py::array_t<double>(3, dv.data());
+      }, "Delta-V since t = 0, earth frame, in the scenario's units (mph or m/s).")
+      .def_property_readonly("mass", [](const Body& b) { return b.sim().engine().model(b.index).mass; }, "[kg]")
+      .def_property_readonly("inertia", [](const Body& b) {
+        const dymesh::Mat3& i = b.sim().engine().model(b.index).inertia;
+        py::array_t<double> out({3, 3});
+        auto a = out.mutable_unchecked<2>();
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) a(r, c) = i(r, c);
+        return out;
+      }, "[kg m^2] about the CG, body axes")
+      .def_property_readonly("crush", [](const Body& b) {
+        const std::vector<double> c = dymesh::VertexCrush(b.sim(), b.index);
+        return py::array_t<double>(static_cast<py::ssize_t>(c.size()), c.data());
+      }, "Permanent crush |Delta| per vertex [m] (a copy).")
+      .def_property_readonly("vertices", [](const Body& b) { return View(b.sim().engine().state(b.index).vertices, b.run); },
+                             "Current vertices, body frame [m]: a read-only view that follows the run.")
+      .def_property_readonly("deformation", [](const Body& b) { return View(b.sim().engine().state(b.index).delta, b.run); },
+                             "Permanent deformation Delta per vertex, body frame [m]: a read-only view.");
+
+  py::class_<Run>(m, "Run", "A scenario run: world mode (run, step) or force-provider mode (host_step).")
+      .def("run", [](py::object self) { self.cast<Run&>().sim().Run(); return self; },
+           "Runs to the end (duration or separation); returns the run.")
+      .def("step", [](Run& r) { if (!r.sim().finished()) r.sim().Advance(); return r.sim().finished(); },
+           "One step; True once the run has ended.")
+      .def_property_readonly("time", [](const Run& r) { return r.sim().time(); })
+      .def_property_readonly("finished", [](const Run& r) { return r.sim().finished(); })
+      .def_property_readonly("status", [](const Run& r) { return std::string(dymesh::RunStatusName(dymesh::Summarize(r.sim()).status)); })
+      .def_property_readonly("bodies", [](py::object self) {
+        const Run& r = self.cast<const Run&>();
+        py::list out;
+        for (int i = 0; i < r.sim().engine().body_count(); ++i) out.append(Body{self, i});
+        return out;
+      })
+      .def("body", [](py::object self, int i) { return Body{self, CheckedIndex(self.cast<const Run&>(), i)}; })
+      .def_property_readonly("summary_json", &Run::SummaryJson, "summary.json text, byte-identical to `dymesh run`'s.")
+      .def_property_readonly("summary", [](const Run& r) { return py::module_::import("json").attr("loads")(r.SummaryJson()); },
+                             "The summary as a dict.")
+      .def("states", &Run::States, "Every body's state, shape (n, 12): x y z roll pitch yaw vx vy vz p q r (SI).")
+      .def("host_step", &Run::HostStep, py::arg("states"), py::arg("dt"),
+           "Force-provider step: every body's state now (n, 12); returns the loads (n, 9) for the coming step: "
+           "force (body), moment (body), force (earth).")
+      .def("host_finish", [](Run& r, const py::array_t<double, py::array::c_style | py::array::forcecast>& states) {
+        r.sim().FinishHostRun(r.ToStates(states));
+      }, py::arg("states"), "Ends a host-driven run with the states reached after the last step.")
+      .def("write_outputs", [](const Run& r, const std::string& dir) {
+        dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(r.sim().scenario()));
+        folder.ReplacePreviousRun();
+        dymesh::WriteOutputs(r.sim(), dymesh::Summarize(r.sim()), dir);
+      }, py::arg("dir"), "Writes meshes, history.csv, report.html and summary.json into `dir`.");
+
+  m.def("load_scenario", [](const std::string& path) { return std::make_unique<Run>(dymesh::LoadScenario(path)); },
+        py::arg("path"), "Loads and validates a scenario file and its meshes; returns a Run.");
+}

@@ -1,0 +1,104 @@
+"""The Python module `dymesh` (issue 10): scenario runs, bodies and summary, views that keep their run
+alive, errors as exceptions, and the force-provider loop. Run by ctest with PYTHONPATH=build/python;
+DYMESH_DATA_DIR and DYMESH_CLI name the data folder and the command."""
+import gc
+import json
+import os
+import subprocess
+import tempfile
+import unittest
+
+import numpy as np
+
+import dymesh
+
+DATA = os.environ["DYMESH_DATA_DIR"]
+CLI = os.environ["DYMESH_CLI"]
+BARRIER = os.path.join(DATA, "scenarios", "barrier_frontal.json")
+
+
+class ScenarioRun(unittest.TestCase):
+    def test_summary_is_byte_identical_to_the_command(self):
+        with tempfile.TemporaryDirectory() as out:
+            subprocess.run([CLI, "run", BARRIER, "--quiet", "--out", out], check=True)
+            with open(os.path.join(out, "summary.json"), encoding="utf-8") as f:
+                expected = f.read()
+        run = dymesh.load_scenario(BARRIER).run()
+        self.assertEqual(run.summary_json, expected)
+        self.assertEqual(run.summary, json.loads(expected))
+        self.assertEqual(run.status, "complete")
+
+    def test_bodies_delta_v_and_crush(self):
+        run = dymesh.load_scenario(BARRIER).run()
+        self.assertEqual([b.name for b in run.bodies], ["p406", "barrier"])
+        car = run.bodies[0]
+        # the demo's 33.0 mph into the barrier, all along x (US scenario: mph)
+        self.assertAlmostEqual(car.delta_v[0], run.summary["bodies"][0]["delta_v_earth"][0], places=12)
+        self.assertLess(car.delta_v[0], -30.0)
+        self.assertEqual(car.crush.shape, (4383,))
+        self.assertAlmostEqual(car.crush.max() / 0.0254, run.summary["bodies"][0]["max_crush"], places=9)
+
+    def test_views_are_read_only_and_keep_their_run_alive(self):
+        run = dymesh.load_scenario(BARRIER)
+        vertices = run.bodies[0].vertices
+        deformation = run.body(0).deformation
+        before = vertices.copy()
+        self.assertEqual(vertices.shape, (4383, 3))
+        self.assertFalse(vertices.flags.writeable)
+        with self.assertRaises(ValueError):
+            vertices[0, 0] = 1.0
+        run.run()
+        # the view follows the run: the crushed front moved back by the deformation
+        moved = np.abs(vertices - before).max()
+        self.assertGreater(moved, 0.4)
+        del run
+        gc.collect()
+        self.assertTrue(np.isfinite(vertices).all())  # the run is still alive through the view
+        self.assertAlmostEqual(np.linalg.norm(deformation, axis=1).max(), moved, delta=0.05)
+
+
+class Errors(unittest.TestCase):
+    def test_engine_messages_become_exceptions(self):
+        with self.assertRaises(dymesh.InputError) as refused:
+            dymesh.load_scenario("/nonexistent/scenario.json")
+        self.assertIn("file not found", str(refused.exception))
+        self.assertTrue(issubclass(dymesh.InputError, ValueError))
+        run = dymesh.load_scenario(BARRIER)
+        with self.assertRaises(IndexError):
+            run.body(2)
+        with self.assertRaisesRegex(ValueError, r"shape \(2, 12\)"):
+            run.host_step(np.zeros((1, 12)), 0.0005)
+        with self.assertRaisesRegex(ValueError, "dt must be finite and > 0"):
+            run.host_step(run.states(), 0.0)
+        bad = run.states()
+        bad[0, 6] = np.nan
+        with self.assertRaisesRegex(ValueError, "non-finite"):
+            run.host_step(bad, 0.0005)
+
+
+class ForceProvider(unittest.TestCase):
+    def test_host_loop_gives_the_world_runs_delta_v(self):
+        # the host integrates the car in the plane (semi-implicit Euler, as the engine's own host)
+        world = dymesh.load_scenario(BARRIER).run()
+        run = dymesh.load_scenario(BARRIER)
+        car = run.bodies[0]
+        states = run.states()
+        dt = 0.0005
+        for _ in range(world.summary["overall"]["steps"]):
+            loads = run.host_step(states, dt)
+            moment_z = loads[0, 5]  # body z is earth z for a level car
+            states[0, 6:8] += loads[0, 6:8] / car.mass * dt
+            states[0, 11] += moment_z / car.inertia[2, 2] * dt
+            states[0, 0:2] += states[0, 6:8] * dt
+            states[0, 5] += states[0, 11] * dt
+        run.host_finish(states)
+        self.assertEqual(run.summary["overall"]["steps"], world.summary["overall"]["steps"])
+        # the same physics through another host: delta-V within 0.1 % (the engine's host integrates
+        # the Euler angles through the DCM; this one adds the yaw rate directly)
+        self.assertAlmostEqual(run.bodies[0].delta_v[0], world.bodies[0].delta_v[0],
+                               delta=0.001 * abs(world.bodies[0].delta_v[0]))
+        self.assertEqual(run.summary["overall"]["status"], "complete")
+
+
+if __name__ == "__main__":
+    unittest.main()
