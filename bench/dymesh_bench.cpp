@@ -16,6 +16,9 @@
 #include "dymesh/core/contact_step.h"
 #include "dymesh/core/parallel.h"
 #include "locate_rates.h"
+#ifdef DYMESH_WITH_CGAL
+#include "cgal_tree.h"
+#endif
 #include "step_timing.h"
 
 namespace dymesh::bench {
@@ -111,6 +114,7 @@ void BM_LocateBruteForce(benchmark::State& state) {
   Report(state, f, located);
 }
 
+#ifdef DYMESH_WITH_CGAL
 void BM_LocateCgal(benchmark::State& state) {
   const Fixture& f = GetFixture(kLadder[state.range(0)]);
   const CgalTree tree(f.setup.master->mesh);
@@ -118,6 +122,7 @@ void BM_LocateCgal(benchmark::State& state) {
   for (auto _ : state) located = tree.Locate(f.rays);
   Report(state, f, located);
 }
+#endif
 
 void BM_Step(benchmark::State& state) {
   // car-to-car contact: both passes, forces, sums, refit; the slave driven in at constant speed
@@ -182,7 +187,9 @@ BENCHMARK(BM_LocateRawEmbree)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LocateEmbreeLocator)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LocateNeighborBox)->DenseRange(0, 5)->Iterations(10)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LocateBruteForce)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+#ifdef DYMESH_WITH_CGAL
 BENCHMARK(BM_LocateCgal)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
+#endif
 BENCHMARK(BM_Step)->ArgsProduct({{0, 1, 2}, {1, 2}})->Iterations(1)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_RefitVersusRebuild)->ArgsProduct({{1, 3, 5}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Memory)->DenseRange(0, 5)->Iterations(1)->Unit(benchmark::kMillisecond);

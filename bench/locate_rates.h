@@ -27,16 +27,4 @@ size_t LocateWithNeighborBox(NeighborBoxLocator* locator, int step, const RaySet
 /// Every triangle tested exactly.
 size_t LocateWithBruteForce(const TriMesh& master, const RaySet& rays);
 
-/// CGAL AABB tree over the master's triangles (double precision), first intersection of each ray.
-class CgalTree {
- public:
-  explicit CgalTree(const TriMesh& mesh);
-  ~CgalTree();
-  size_t Locate(const RaySet& rays) const;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
-
 }  // namespace dymesh::bench

@@ -56,8 +56,6 @@ int RunBench(const BenchRequest& request) {
     bench::LocateWithNeighborBox(&boxes, step, sample, options.search_backoff);
     step += options.calc_nabor_interval;  // every timed pass rebuilds its lists, as a new contact does
   });
-  const bench::CgalTree cgal(master);
-  const double cgal_rate = Rate(rays.size(), [&] { cgal.Locate(rays); });
   // whole collision steps at one and N threads, and the memory of the master body
   const bench::StepTiming one = bench::MeasureSteps(setup, 1, 2, 5);
   const bench::StepTiming many = bench::MeasureSteps(setup, request.threads, 2, 5);
@@ -68,9 +66,8 @@ int RunBench(const BenchRequest& request) {
       {"master_triangles", master.triangles.size()},
       {"slave_triangles", setup.slave->mesh.triangles.size()},
       {"segments", rays.size()},
-      {"locate_per_second", {{"engine", engine}, {"raw_embree", raw}, {"neighbor_box", neighbor}, {"cgal", cgal_rate}}},
-      {"ratio_to_raw_embree",
-       {{"engine", engine / raw}, {"neighbor_box", neighbor / raw}, {"cgal", cgal_rate / raw}}},
+      {"locate_per_second", {{"engine", engine}, {"raw_embree", raw}, {"neighbor_box", neighbor}}},
+      {"ratio_to_raw_embree", {{"engine", engine / raw}, {"neighbor_box", neighbor / raw}}},
       {"step_ms", {{"threads_1", 1e3 * one.step_seconds}, {"threads_n", 1e3 * many.step_seconds}}},
       {"threads", request.threads},
       {"speedup", one.step_seconds / many.step_seconds},
@@ -87,7 +84,6 @@ int RunBench(const BenchRequest& request) {
   std::printf("  engine (Embree)     %12.0f    %6.2fx\n", engine, engine / raw);
   std::printf("  raw Embree          %12.0f    %6.2fx\n", raw, 1.0);
   std::printf("  neighbour box       %12.0f    %6.3fx   (sample of %zu)\n", neighbor, neighbor / raw, sample.size());
-  std::printf("  CGAL AABB tree      %12.0f    %6.2fx\n", cgal_rate, cgal_rate / raw);
   std::printf("collision step        %.3f ms at 1 thread, %.3f ms at %d threads (%.2fx); %.2fx its ray casts\n",
               1e3 * one.step_seconds, 1e3 * many.step_seconds, request.threads, one.step_seconds / many.step_seconds,
               many.step_seconds / many.raycast_seconds);

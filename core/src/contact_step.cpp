@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "dymesh/core/crush_sharing.h"
@@ -9,6 +11,13 @@
 
 namespace dymesh {
 namespace {
+
+// a host's pose and velocities must be finite
+void RequireFiniteState(const RigidState& r, int body) {
+  if (!r.position.allFinite() || !r.velocity.allFinite() || !r.omega.allFinite() ||
+      !std::isfinite(r.roll + r.pitch + r.yaw))
+    throw std::invalid_argument("body " + std::to_string(body) + ": non-finite pose or velocity");
+}
 
 // a pushback direction this close to parallel with a face (cosine) does not leave through it
 constexpr double kMinFacing = 1e-9;
@@ -91,6 +100,14 @@ struct ContactEngine::Located {
 ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> models, std::vector<RigidState> initial,
                              ContactOptions options, const LocatorFactory& make_locator)
     : models_(std::move(models)), options_(options) {
+  // one pose per model, every one finite, every model present
+  if (initial.size() != models_.size())
+    throw std::invalid_argument("ContactEngine: " + std::to_string(models_.size()) + " models but " +
+                                std::to_string(initial.size()) + " initial states");
+  for (std::size_t i = 0; i < models_.size(); ++i) {
+    if (!models_[i]) throw std::invalid_argument("ContactEngine: model " + std::to_string(i) + " is null");
+    RequireFiniteState(initial[i], static_cast<int>(i));
+  }
   const int n = body_count();
   // one state, one locator and one bounds box per body; one touching list pair per body pair
   for (int i = 0; i < n; ++i) {
@@ -152,7 +169,16 @@ bool ContactEngine::BoundsOverlap(int a, int b) const {
   return (alo.array() <= bhi.array() + reach).all() && (blo.array() <= ahi.array() + reach).all();
 }
 
+void ContactEngine::SetRigidState(int i, const RigidState& rigid) {
+  if (i < 0 || i >= body_count())
+    throw std::invalid_argument("SetRigidState: body " + std::to_string(i) + " is out of range 0.." +
+                                std::to_string(body_count() - 1));
+  RequireFiniteState(rigid, i);
+  states_[i].rigid = rigid;
+}
+
 StepResult ContactEngine::Step(double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) throw std::invalid_argument("Step: dt must be finite and > 0");
   FloatModeScope float_mode;
   AccountWork();  // a step the host did not book itself
   const int n = body_count();

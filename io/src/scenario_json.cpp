@@ -26,7 +26,6 @@ namespace fs = std::filesystem;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kMaxSteps = 1e7;                          // most steps a scenario may ask for
 constexpr double kDefaultConversionHeight = 30.0 * units::kInch;  // [m] CRUSH_HEIGHT (spec §4)
-constexpr const char* kSurfaceKeys[kBodySurfaceCount] = {"front", "right", "back", "left", "top", "bottom"};
 
 // ---------------------------------------------------------------------------------------------
 // unit systems: SI value = input value * factor
@@ -645,8 +644,9 @@ void ParseStiffnessSet(const Source& src, const Json& j, const std::string& path
   std::optional<Stiffness> fallback;
   if (const Json* v = Find(j, "default")) fallback = ParseSurfaceStiffness(src, *v, Join(path, "default"));
   for (int s = 0; s < kBodySurfaceCount; ++s) {
-    if (const Json* v = Find(j, kSurfaceKeys[s]))
-      (*out)[s] = ParseSurfaceStiffness(src, *v, Join(path, kSurfaceKeys[s]));
+    const char* key = BodySurfaceName(static_cast<BodySurface>(s));
+    if (const Json* v = Find(j, key))
+      (*out)[s] = ParseSurfaceStiffness(src, *v, Join(path, key));
     else if (fallback)
       (*out)[s] = fallback;
   }
@@ -839,7 +839,7 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
     const Stiffness& k = body.stiffness[s];
     if (!body.rigid && !(k.A > 0.0 || k.B > 0.0))
       Fail(src, Join(path, "stiffness"),
-           std::string("a deformable body needs A > 0 or B > 0 on every surface; \"") + kSurfaceKeys[s] +
+           std::string("a deformable body needs A > 0 or B > 0 on every surface; \"") + BodySurfaceName(static_cast<BodySurface>(s)) +
                "\" has none (give it, or \"default\", or set \"rigid\": true)");
   }
   return body;

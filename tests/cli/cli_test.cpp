@@ -194,7 +194,8 @@ TEST_F(Cli, BenchPrintsItsFiguresForUserMeshes) {
   const Json j = Json::parse(r.out);
   EXPECT_EQ(j["master_triangles"].get<int>(), 1611);
   EXPECT_GT(j["segments"].get<int>(), 0);
-  for (const char* key : {"engine", "raw_embree", "neighbor_box", "cgal"}) EXPECT_GT(j["locate_per_second"][key].get<double>(), 0.0) << key;
+  for (const char* key : {"engine", "raw_embree", "neighbor_box"}) EXPECT_GT(j["locate_per_second"][key].get<double>(), 0.0) << key;
+  EXPECT_FALSE(j["locate_per_second"].contains("cgal"));  // CGAL is the benchmark program's, never the command's
   EXPECT_GT(j["step_ms"]["threads_1"].get<double>(), 0.0);
   EXPECT_GT(j["bytes_per_triangle"].get<double>(), 100.0);
   EXPECT_LT(j["bytes_per_triangle"].get<double>(), 400.0);  // the memory target of issue 3

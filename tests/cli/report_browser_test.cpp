@@ -109,7 +109,7 @@ TEST_F(ReportInBrowser, DemoReportParsesAsXhtmlWithoutConsoleMessages) {
 }
 
 TEST_F(ReportInBrowser, EveryPlotRendersWithSizeAndShapes) {
-  for (const auto& [scenario, exit_code] : {std::pair{"barrier_frontal.json", 0}, std::pair{"car_to_car_side.json", 4}}) {
+  for (const auto& [scenario, exit_code] : {std::pair<std::string, int>{"barrier_frontal.json", 0}, std::pair<std::string, int>{"car_to_car_side.json", 4}}) {
     SCOPED_TRACE(scenario);
     fs::remove_all(dir_ / "out");
     std::string html = testing::ReadFile(MakeReport(scenario, exit_code));

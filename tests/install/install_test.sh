@@ -20,6 +20,6 @@ cc -std=c99 -o "$work/pkg_consumer" "$source/tests/install/c_consumer/main.c" $(
 LD_LIBRARY_PATH="$(pkg-config --variable=libdir dymesh)" "$work/pkg_consumer"
 # the Python module from the prefix's Python path
 if [ -n "$(find "$work/prefix" -name 'dymesh.cpython-*.so')" ]; then
-  PYTHONPATH="$(dirname "$(find "$work/prefix" -name 'dymesh.cpython-*.so')")" /usr/bin/python3 -c \
-    "import dymesh; r = dymesh.load_scenario('$source/data/scenarios/barrier_frontal.json').run(); print('Python from the prefix:', r.status)"
+  PYTHONPATH="$(dirname "$(find "$work/prefix" -name 'dymesh.cpython-*.so')")" /usr/bin/python3 \
+    "$source/tests/install/python_example.py" "$source/data/scenarios/barrier_frontal.json"
 fi

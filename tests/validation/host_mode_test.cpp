@@ -63,5 +63,22 @@ TEST(HostMode, RefusesWrongCountsNonFiniteStatesAndBadSteps) {
   EXPECT_THROW(sim.HostStep(states, 0.0005), std::logic_error);
 }
 
+TEST(HostMode, ContactEngineRefusesMismatchedPosesBadIndicesNonFiniteStatesAndBadSteps) {
+  Scenario s = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json");
+  const auto models = BuildBodyModels(s);
+  const auto factory = MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>());
+  EXPECT_THROW(ContactEngine(models, {s.bodies[0].initial}, s.contact, factory), std::invalid_argument);
+  RigidState nan_pose = s.bodies[0].initial;
+  nan_pose.yaw = std::nan("");
+  EXPECT_THROW(ContactEngine(models, {nan_pose, s.bodies[1].initial}, s.contact, factory), std::invalid_argument);
+  ContactEngine engine(models, {s.bodies[0].initial, s.bodies[1].initial}, s.contact, factory);
+  EXPECT_THROW(engine.SetRigidState(2, s.bodies[0].initial), std::invalid_argument);
+  EXPECT_THROW(engine.SetRigidState(-1, s.bodies[0].initial), std::invalid_argument);
+  EXPECT_THROW(engine.SetRigidState(0, nan_pose), std::invalid_argument);
+  EXPECT_THROW(engine.Step(0.0), std::invalid_argument);
+  EXPECT_THROW(engine.Step(-0.001), std::invalid_argument);
+  EXPECT_NO_THROW(engine.Step(0.0005));
+}
+
 }  // namespace
 }  // namespace dymesh

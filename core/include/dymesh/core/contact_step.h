@@ -63,7 +63,8 @@ class ContactEngine {
   const ContactOptions& options() const { return options_; }
 
   /// Host input: pose and velocities of body i for the coming step.
-  void SetRigidState(int i, const RigidState& rigid) { states_[i].rigid = rigid; }
+  /// Throws std::invalid_argument for an index out of range or a non-finite state.
+  void SetRigidState(int i, const RigidState& rigid);
 
   /// Energy ledger (LS-DYNA-style contact energy): books the work that the last step's contact loads
   /// did on the motion the host integrated, at the mean of the velocities before and after the step
