@@ -299,7 +299,7 @@ std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, i
   return merged;
 }
 
-void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const {
+void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) {
   // locate, then restore and evaluate the node law
   Located hit;
   const bool found = LocateNode(f, v, was_touching, &out->scratch, &hit);
@@ -525,7 +525,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, std
 }
 
 double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
-                                  ContactDiagnostics* diag, double* law_energy, Vec3* new_delta) const {
+                                  ContactDiagnostics* diag, double* law_energy, Vec3* new_delta) {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
   const Stiffness& k = m.VertexStiffness(v);

@@ -113,14 +113,18 @@ class ContactEngine {
   PassSums RunPass(int master, int slave, bool stage, std::vector<int>* touching, double dt,
                    ContactDiagnostics* diag);
   std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const std::vector<int>& touching);
-  void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) const;
+  // writes slave node v's own state (through RestoreNode), its contact normal and its pending Delta
+  // (f.pending[v]); nothing of any other node (the parallel loop relies on it), sums into *out
+  void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out);
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
   bool LocateNode(const PassFrame& f, int v, bool was_touching, std::vector<Candidate>* scratch, Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
                        const Vec3& inward, const Vec3& previous, bool poly_normal, const Located* best,
                        Located* out) const;
+  // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
+  // step_start_deflection; the new Delta goes to *new_delta (committed later)
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
-                     ContactDiagnostics* diag, double* law_energy, Vec3* new_delta) const;
+                     ContactDiagnostics* diag, double* law_energy, Vec3* new_delta);
   void CommitPending(int body);
   bool BoundsOverlap(int a, int b) const;
   void InitBounds(int body);
