@@ -13,15 +13,12 @@ namespace {
 bool AnyExact(const TriMesh& mesh, const std::vector<Vec3>& normals, const std::vector<Candidate>& tris,
               const Vec3& o, const Vec3& d, double length) {
   for (const Candidate& c : tris) {
-    // as the engine: the depth in double always, the inside test unless proven by the locator
+    // the engine's own exact test
     const auto& tri = mesh.triangles[c.triangle];
-    const Vec3& a = mesh.vertices[tri[0]];
     double dist = 0.0;
-    if (!RayPlaneDistance(o, d, a, normals[c.triangle], &dist) || dist < 0.0 || dist > length) continue;
-    if (c.inside || InsideTriangleCrossProduct(o + dist * d, a, mesh.vertices[tri[1]], mesh.vertices[tri[2]],
-                                               normals[c.triangle])) {
+    if (CandidateCrossing(o, d, 0.0, length, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
+                          normals[c.triangle], c.inside, &dist))
       return true;
-    }
   }
   return false;
 }

@@ -445,12 +445,11 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candida
   // the two surfaces face each other: the master's outward normal points into the slave
   if (n.dot(inward) <= kMinFacing) return false;
   if (n.dot(previous) < 0.0) return false;
+  // the depth along the ray and the spec §2 inside test, unless the locator proved it with margin
   double depth = 0.0;
-  if (!RayPlaneDistance(p, d, a, n, &depth)) return false;
-  if (depth < -options_.search_backoff || depth > options_.toofar_maximum) return false;
-  // spec §2 inside test (InsidePolygonTest_CrossProd), unless the locator proved it with margin
-  const Vec3 q = p + depth * d;
-  if (!(candidate.inside && !poly_normal) && !InsideTriangleCrossProduct(q, a, b, c, n)) return false;
+  if (!CandidateCrossing(p, d, -options_.search_backoff, options_.toofar_maximum, a, b, c, n,
+                         candidate.inside && !poly_normal, &depth))
+    return false;
   // best = smallest |depth| along the ray; ties keep the earlier (lower-index) triangle
   if (best == nullptr || std::abs(depth) < std::abs(best->ray_depth)) {
     out->triangle = t;

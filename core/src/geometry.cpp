@@ -36,6 +36,13 @@ bool SegmentCrossesTriangle(const Vec3& origin, const Vec3& dir, double length, 
   return InsideTriangleCrossProduct(origin + *t * dir, a, b, c, n);
 }
 
+bool CandidateCrossing(const Vec3& origin, const Vec3& dir, double t_min, double t_max, const Vec3& a, const Vec3& b,
+                       const Vec3& c, const Vec3& n, bool proven_inside, double* t) {
+  if (!RayPlaneDistance(origin, dir, a, n, t)) return false;
+  if (*t < t_min || *t > t_max) return false;
+  return proven_inside || InsideTriangleCrossProduct(origin + *t * dir, a, b, c, n);
+}
+
 Mat3 BodyToEarth(double roll, double pitch, double yaw) {
   // spec §8 Amtx: yaw about z, then pitch about y, then roll about x (SAE, z down)
   const double cf = std::cos(roll), sf = std::sin(roll);

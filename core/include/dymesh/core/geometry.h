@@ -30,6 +30,13 @@ inline constexpr double kSegmentSlack = 1e-9;
 bool SegmentCrossesTriangle(const Vec3& origin, const Vec3& dir, double length, const Vec3& a, const Vec3& b,
                             const Vec3& c, double slack, double* t);
 
+/// The exact candidate test of Location (spec §2), shared by the contact step and the benchmarks:
+/// the ray origin + t dir meets the plane of triangle abc (unit normal n) at t in [t_min, t_max]
+/// and, unless `proven_inside` (the locator showed it with margin), inside the triangle
+/// (InsidePolygonTest_CrossProd). Sets *t when it meets the plane.
+bool CandidateCrossing(const Vec3& origin, const Vec3& dir, double t_min, double t_max, const Vec3& a, const Vec3& b,
+                       const Vec3& c, const Vec3& n, bool proven_inside, double* t);
+
 /// Euler-angle DCM (spec §8, Amtx): maps body-frame vectors to the earth frame,
 /// R = Rz(yaw) * Ry(pitch) * Rx(roll), SAE axes (x forward, y right, z down).
 Mat3 BodyToEarth(double roll, double pitch, double yaw);
