@@ -62,20 +62,30 @@ TriMesh WeldRelative(const TriMesh& mesh) { return Weld(mesh, kRelativeWeldToler
 // the axes mapping as three signed axes; refuses anything that is not a signed permutation
 std::array<SignedAxis, 3> AxesMapping(const MeshSource& source, const std::string& scenario_file,
                                       const std::string& field) {
+  if (!IsAxesPermutation(source.axes))
+    throw InputError(scenario_file, field + ".axes",
+                     std::string(kAxesExpected) + ", got [\"" + source.axes[0] + "\", \"" + source.axes[1] + "\", \"" +
+                         source.axes[2] + "\"]");
   std::array<SignedAxis, 3> axes;
-  bool used[3] = {false, false, false};
   for (int i = 0; i < 3; ++i) {
     axes[i] = ParseSignedAxis(source.axes[i]);
-    if (axes[i].index < 0 || used[axes[i].index])
-      throw InputError(scenario_file, field + ".axes",
-                       "expected a permutation of x, y, z, each optionally negated (e.g. [\"x\", \"z\", \"-y\"]), got [\"" +
-                           source.axes[0] + "\", \"" + source.axes[1] + "\", \"" + source.axes[2] + "\"]");
-    used[axes[i].index] = true;
   }
   return axes;
 }
 
 }  // namespace
+
+int SignedAxisIndex(const std::string& name) { return ParseSignedAxis(name).index; }
+
+bool IsAxesPermutation(const std::array<std::string, 3>& axes) {
+  bool used[3] = {false, false, false};
+  for (const std::string& a : axes) {
+    const int index = SignedAxisIndex(a);
+    if (index < 0 || used[index]) return false;
+    used[index] = true;
+  }
+  return true;
+}
 
 TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
   // the file must exist
@@ -155,8 +165,8 @@ TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file
     for (Vec3& p : mesh.vertices) p *= factor;
   }
   // refine
-  if (source.subdivisions < 0 || source.subdivisions > 6)
-    throw InputError(scenario_file, field + ".subdivisions", "expected an integer in 0..6");
+  if (source.subdivisions < 0 || source.subdivisions > kMaxSubdivisions)
+    throw InputError(scenario_file, field + ".subdivisions", "expected an integer in 0.." + std::to_string(kMaxSubdivisions));
   for (int i = 0; i < source.subdivisions; ++i) mesh = Subdivide(mesh);
   // clean: drop degenerate triangles, merge coincident vertices
   RemoveDegenerateTriangles(&mesh);

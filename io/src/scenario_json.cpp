@@ -1,5 +1,7 @@
 #include "dymesh/io/scenario_json.h"
 
+#include "dymesh/io/mesh_import.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -497,20 +499,16 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
 // ---------------------------------------------------------------------------------------------
 // mesh source
 
+// three signed axis names, checked by the mesh loader's own rule (IsAxesPermutation)
 std::array<std::string, 3> ReadAxes(const Source& src, const Json& j, const std::string& path) {
-  const std::string expected = "expected a permutation of x, y, z, each optionally negated (e.g. [\"x\", \"z\", \"-y\"])";
-  if (!j.is_array() || j.size() != 3) Fail(src, path, expected + ", got " + Describe(j));
+  if (!j.is_array() || j.size() != 3) Fail(src, path, std::string(kAxesExpected) + ", got " + Describe(j));
   std::array<std::string, 3> axes;
-  bool used[3] = {false, false, false};
   for (int i = 0; i < 3; ++i) {
-    const std::string a = ReadString(src, j[i], At(path, i));
-    const std::string letter = (!a.empty() && a[0] == '-') ? a.substr(1) : a;
-    const int index = letter == "x" ? 0 : letter == "y" ? 1 : letter == "z" ? 2 : -1;
-    if (index < 0) Fail(src, At(path, i), "expected one of \"x\", \"-x\", \"y\", \"-y\", \"z\", \"-z\", got " + Describe(j[i]));
-    if (used[index]) Fail(src, path, expected + ", got " + j.dump());
-    used[index] = true;
-    axes[i] = a;
+    axes[i] = ReadString(src, j[i], At(path, i));
+    if (SignedAxisIndex(axes[i]) < 0)
+      Fail(src, At(path, i), "expected one of \"x\", \"-x\", \"y\", \"-y\", \"z\", \"-z\", got " + Describe(j[i]));
   }
+  if (!IsAxesPermutation(axes)) Fail(src, path, std::string(kAxesExpected) + ", got " + j.dump());
   return axes;
 }
 
@@ -553,7 +551,8 @@ MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) 
   CheckKeys(src, j, path, {"file", "unit", "scale", "axes", "fit_length", "subdivisions", "box", "cylinder"});
   MeshSource mesh;
   if (const Json* v = Find(j, "subdivisions"))
-    mesh.subdivisions = ReadInt(src, *v, Join(path, "subdivisions"), 0, 6, "expected an integer in 0..6");
+    mesh.subdivisions = ReadInt(src, *v, Join(path, "subdivisions"), 0, kMaxSubdivisions,
+                                "expected an integer in 0.." + std::to_string(kMaxSubdivisions));
   // a generated cylinder takes no file or box options
   if (const Json* cylinder = Find(j, "cylinder")) {
     for (const char* key : {"file", "unit", "scale", "axes", "fit_length", "box"})

@@ -9,6 +9,19 @@
 /// Mesh files in (assimp: OBJ, STL, PLY, glTF, ...) and out (OBJ, PLY), and a body's mesh from its source.
 namespace dymesh {
 
+/// Most 1-to-4 subdivisions a mesh source may ask for (each quadruples the triangles).
+inline constexpr int kMaxSubdivisions = 6;
+
+/// What an axes mapping must be, for messages.
+inline constexpr const char* kAxesExpected =
+    "expected a permutation of x, y, z, each optionally negated (e.g. [\"x\", \"z\", \"-y\"])";
+
+/// Index of a signed axis name ("x", "-y", ...): 0, 1 or 2, or -1 when it is none of the six.
+int SignedAxisIndex(const std::string& name);
+
+/// Whether three signed axis names are a permutation of x, y, z (the one check of a mapping).
+bool IsAxesPermutation(const std::array<std::string, 3>& axes);
+
 /// Loads every triangle of a mesh file into one mesh (file units, file axes), welded.
 /// Throws InputError(path, field, ...) for a missing, unreadable or empty file.
 TriMesh LoadMeshFile(const std::string& path, const std::string& field);
