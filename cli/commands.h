@@ -2,6 +2,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 /// The dymesh subcommands, callable from main() and from tests. They hold no physics.
 namespace dymesh::cli {
@@ -28,6 +29,29 @@ struct RunRequest {
 /// status "interrupted"); another one stops the writing between files. Throws InputError on bad input.
 int RunCommand(const RunRequest& request, const std::function<int()>& interrupts, std::ostream& out,
                std::ostream& err);
+
+/// What `dymesh ensemble` was asked to do.
+struct EnsembleRequest {
+  std::string spec_path;
+  std::string out_dir = "ensemble";
+  int threads = 0;     ///< worker threads (0: all cores)
+  int samples = 0;     ///< 0: the spec's own count
+  std::string shard;   ///< "K/N": run every N-th sample from the K-th (1-based); empty: all
+  bool quiet = false;
+};
+
+/// Runs an ensemble spec into `out_dir` (resuming what is there); 130 when interrupted (the
+/// journal keeps the samples done). Throws InputError on a bad spec.
+int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& interrupts, std::ostream& out,
+                    std::ostream& err);
+
+/// Re-runs sample `index` with the full single-run outputs and its record (record.json).
+int EnsembleReplayCommand(const std::string& spec_path, int samples, int index, const std::string& out_dir,
+                          std::ostream& out);
+
+/// Joins shard folders into `out_dir`.
+int EnsembleMergeCommand(const std::string& spec_path, int samples, const std::vector<std::string>& shards,
+                         const std::string& out_dir, std::ostream& out);
 
 /// Validates a scenario and its meshes without running and prints what it found (mesh statistics
 /// in the scenario's units, body surfaces). Throws InputError on bad input.

@@ -96,6 +96,29 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->expected(3);
   bench_cmd->add_flag("--json", bench.json, "print JSON");
+  // ensemble: run a spec; replay one sample; merge shards
+  dymesh::cli::EnsembleRequest ens;
+  CLI::App* ensemble = app.add_subcommand("ensemble", "run a Monte Carlo spec: samples.jsonl and ensemble.json (resumable)");
+  ensemble->add_option("spec", ens.spec_path, "ensemble spec JSON file");
+  ensemble->add_option("--out", ens.out_dir, "output folder (a re-run resumes it)");
+  ensemble->add_option("--threads", ens.threads, "worker threads (default: all cores); results are identical")->check(kThreadCount);
+  ensemble->add_option("--samples", ens.samples, "number of samples (default: the spec's)")->check(CLI::Range(1, 10000000));
+  ensemble->add_option("--shard", ens.shard, "K/N: run every N-th sample from the K-th (Slurm arrays, GNU parallel)");
+  ensemble->add_flag("-q,--quiet", ens.quiet, "no progress lines");
+  int replay_index = -1;
+  std::string replay_spec, replay_out = "replay", merge_spec, merge_out = "ensemble";
+  std::vector<std::string> merge_shards;
+  CLI::App* replay = ensemble->add_subcommand("replay", "re-run one sample with the full single-run outputs");
+  replay->add_option("spec", replay_spec, "ensemble spec JSON file")->required();
+  replay->add_option("--index", replay_index, "sample index")->required();
+  replay->add_option("--out", replay_out, "output folder");
+  replay->add_option("--samples", ens.samples, "number of samples, if the ensemble was run with --samples");
+  CLI::App* merge = ensemble->add_subcommand("merge", "join shard folders into one ensemble");
+  merge->add_option("spec", merge_spec, "ensemble spec JSON file")->required();
+  merge->add_option("shards", merge_shards, "shard output folders")->required();
+  merge->add_option("--out", merge_out, "output folder");
+  merge->add_option("--samples", ens.samples, "number of samples, if the shards were run with --samples");
+
   // command-line mistakes: one human line and exit 2 (help and version exit 0)
   try {
     app.parse(argc, argv);
@@ -109,6 +132,21 @@ int main(int argc, char** argv) {
   }
 
   if (*check) return Guarded([&] { return dymesh::cli::CheckCommand(check_path, std::cout); });
+  if (*replay)
+    return Guarded([&] { return dymesh::cli::EnsembleReplayCommand(replay_spec, ens.samples, replay_index, replay_out, std::cout); });
+  if (*merge)
+    return Guarded([&] { return dymesh::cli::EnsembleMergeCommand(merge_spec, ens.samples, merge_shards, merge_out, std::cout); });
+  if (*ensemble) {
+    if (ens.spec_path.empty()) {
+      std::fprintf(stderr, "error: ensemble: give a spec file (or: ensemble replay | ensemble merge)\n");
+      return dymesh::cli::kExitBadInput;
+    }
+    InstallStopHandlers();
+    running = 1;
+    return Guarded([&] {
+      return dymesh::cli::EnsembleCommand(ens, [] { return static_cast<int>(stop_requests); }, std::cout, std::cerr);
+    });
+  }
   if (*bench_cmd) {
     if (axes.size() == 3) bench.axes = {axes[0], axes[1], axes[2]};
     return Guarded([&] { return dymesh::cli::RunBench(bench); });

@@ -2,12 +2,12 @@
 # ::analysis, ::io, ::report, ::c), the package configuration and version, and dymesh.pc
 include(CMakePackageConfigHelpers)
 set(DYMESH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/dymesh)
-install(TARGETS dymesh_core dymesh_accel dymesh_analysis dymesh_io dymesh_report ${DYMESH_C_TARGET}
+install(TARGETS dymesh_core dymesh_accel dymesh_analysis dymesh_io dymesh_report dymesh_ensemble ${DYMESH_C_TARGET}
         EXPORT dymeshTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(layer core accel analysis io report api)
+foreach(layer core accel analysis io report ensemble api)
   if(EXISTS ${PROJECT_SOURCE_DIR}/${layer}/include)
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/${layer}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   endif()

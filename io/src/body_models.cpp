@@ -30,11 +30,17 @@ void RefuseFlatMesh(const TriMesh& mesh, const MeshStats& stats, const std::stri
 }  // namespace
 
 std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario) {
+  return BuildBodyModels(scenario, [&](const MeshSource& source, const std::string& field) {
+    return BuildBodyMesh(source, scenario.file, field);
+  });
+}
+
+std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario, const MeshProvider& mesh_for) {
   std::vector<std::shared_ptr<const BodyModel>> models;
   for (size_t i = 0; i < scenario.bodies.size(); ++i) {
     const BodySpec& b = scenario.bodies[i];
     // mesh in body axes, moved so the CG (given, or the bounds centre) is the origin
-    TriMesh mesh = BuildBodyMesh(b.mesh, scenario.file, "bodies[" + std::to_string(i) + "].mesh");
+    TriMesh mesh = mesh_for(b.mesh, "bodies[" + std::to_string(i) + "].mesh");
     const MeshStats stats = ComputeStats(mesh);
     if (!b.rigid) RefuseFlatMesh(mesh, stats, scenario.file, "bodies[" + std::to_string(i) + "].mesh");
     const Vec3 cg = b.cg.value_or(0.5 * (stats.min + stats.max));

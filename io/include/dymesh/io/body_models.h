@@ -1,5 +1,7 @@
 #pragma once
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "dymesh/core/body.h"
@@ -12,5 +14,11 @@ namespace dymesh {
 /// axes about its CG (given, or the bounds centre), inertia given or that of a solid box of the
 /// bounds. Refuses (InputError) a deformable body whose mesh encloses no volume.
 std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario);
+
+/// The body-frame mesh of a mesh source (as BuildBodyMesh makes it); `field` names it in messages.
+using MeshProvider = std::function<TriMesh(const MeshSource& source, const std::string& field)>;
+
+/// The same from meshes the caller provides (e.g. cached between the runs of an ensemble).
+std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario, const MeshProvider& mesh_for);
 
 }  // namespace dymesh

@@ -1,0 +1,100 @@
+// dymesh ensemble: runs a Monte Carlo spec into a folder (resumable, shardable), replays one
+// sample with the full single-run outputs, merges shards.
+#include <cstdio>
+#include <optional>
+#include <sstream>
+
+#include <tbb/global_control.h>
+
+#include "commands.h"
+#include "dymesh/accel/embree_locator.h"
+#include "dymesh/analysis/summary.h"
+#include "dymesh/ensemble/design.h"
+#include "dymesh/ensemble/ensemble_run.h"
+#include "dymesh/ensemble/sample_run.h"
+#include "dymesh/ensemble/statistics.h"
+#include "dymesh/io/atomic_file.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/output_folder.h"
+#include "dymesh/report/output_files.h"
+#include "format.h"
+
+namespace dymesh::cli {
+namespace {
+
+// "K/N" with 1 <= K <= N
+void ParseShard(const std::string& text, int* shard, int* shards) {
+  if (text.empty()) return;
+  int k = 0, n = 0;
+  char slash = 0;
+  std::istringstream in(text);
+  if (!(in >> k >> slash >> n) || slash != '/' || n < 1 || k < 1 || k > n || !in.eof())
+    throw InputError("--shard", "--shard", "expected K/N with 1 <= K <= N, got \"" + text + "\"");
+  *shard = k, *shards = n;
+}
+
+// the spec as asked: its own sample count, or --samples
+ensemble::Spec LoadRequestedSpec(const std::string& path, int samples) {
+  ensemble::Spec spec = ensemble::LoadSpec(path);
+  return samples > 0 ? ensemble::WithSamples(spec, samples) : spec;
+}
+
+}  // namespace
+
+int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& interrupts, std::ostream& out,
+                    std::ostream& err) {
+  const ensemble::Spec spec = LoadRequestedSpec(request.spec_path, request.samples);
+  ensemble::RunOptions options;
+  options.out_dir = request.out_dir;
+  ParseShard(request.shard, &options.shard, &options.shards);
+  std::optional<tbb::global_control> thread_limit;
+  if (request.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, request.threads);
+  options.stop = [&] { return interrupts() > 0; };
+  options.progress = [&](int done, int total) {
+    if (!request.quiet && (done % 10 == 0 || done == total)) err << Format("progress: %d / %d samples\n", done, total);
+  };
+  const ensemble::RunCounts c = ensemble::RunEnsemble(spec, options);
+  out << Format("%s: %d samples (shard %d/%d): %d run now, %d resumed, %d not complete (excluded from the statistics)\n",
+                request.spec_path.c_str(), c.total, options.shard, options.shards, c.ran, c.resumed, c.failed);
+  if (!c.finished) {
+    err << "interrupted: the samples recorded so far are kept in " << request.out_dir
+        << "/samples.journal.jsonl; run the same command again to resume\n";
+    return kExitInterrupted;
+  }
+  out << "outputs in " << request.out_dir << ": samples.jsonl, ensemble.json\n";
+  return kExitOk;
+}
+
+int EnsembleReplayCommand(const std::string& spec_path, int samples, int index, const std::string& out_dir,
+                          std::ostream& out) {
+  const ensemble::Spec spec = LoadRequestedSpec(spec_path, samples);
+  if (index < 0 || index >= spec.samples)
+    throw InputError(spec_path, "--index", "expected a sample index in 0.." + std::to_string(spec.samples - 1) +
+                                               ", got " + std::to_string(index));
+  const std::vector<double> values = ensemble::DesignTable(spec).Values(index);
+  // the record, as the ensemble wrote it, and the full single-run outputs of the same run
+  ensemble::MeshCache meshes;
+  const ensemble::SampleRecord record = ensemble::RunSample(spec, index, values, &meshes);
+  const Scenario scenario = ensemble::SampleScenario(spec, values);
+  std::vector<std::string> names = OutputFileNames(scenario);
+  names.push_back("record.json");
+  OutputFolder folder(out_dir, names);
+  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+  sim.Run();
+  folder.ReplacePreviousRun();
+  WriteOutputs(sim, Summarize(sim), out_dir);
+  WriteFileAtomically(out_dir + "/record.json", record.line + "\n");
+  out << "sample " << index << " (" << record.status << ") replayed into " << out_dir
+      << ": the single-run outputs and record.json (its samples.jsonl line)\n";
+  return kExitOk;
+}
+
+int EnsembleMergeCommand(const std::string& spec_path, int samples, const std::vector<std::string>& shards,
+                         const std::string& out_dir, std::ostream& out) {
+  const ensemble::Spec spec = LoadRequestedSpec(spec_path, samples);
+  ensemble::MergeShards(spec, shards, out_dir);
+  out << shards.size() << " shards merged into " << out_dir << ": samples.jsonl, ensemble.json\n";
+  return kExitOk;
+}
+
+}  // namespace dymesh::cli

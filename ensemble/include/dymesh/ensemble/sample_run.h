@@ -1,0 +1,46 @@
+#pragma once
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "dymesh/core/simulation.h"
+#include "dymesh/ensemble/spec.h"
+
+/// One sample: its scenario (the base with the sample's values written at the inputs' paths), its
+/// run and its record (one line of samples.jsonl).
+namespace dymesh::ensemble {
+
+/// Meshes built once per mesh source and shared read-only by every sample (thread-safe).
+class MeshCache {
+ public:
+  TriMesh Get(const MeshSource& source, const std::string& scenario_file, const std::string& field);
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::shared_ptr<const TriMesh>> meshes_;
+};
+
+/// A sample's result: the record line and the outputs the statistics use (empty unless complete).
+struct SampleRecord {
+  int index = -1;
+  std::string line;                        ///< JSON, no newline
+  std::string status;                      ///< run status, or "failed_input" when refused
+  std::map<std::string, double> outputs;   ///< "BODY.QUANTITY" -> value (scenario units)
+};
+
+/// The sample's scenario: the base with `values` at the inputs' paths (InputError when refused).
+Scenario SampleScenario(const Spec& spec, const std::vector<double>& values);
+
+/// Runs sample `index` with `values` and makes its record; never throws for a bad sample (the
+/// record says why). `engine_version` is written into the record.
+SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, MeshCache* meshes);
+
+/// Reads a record line back (status, outputs); false when it is not a valid record of `spec`.
+bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out);
+
+/// The engine version written into records.
+inline constexpr const char* kEngineVersion = "0.1.0";
+
+}  // namespace dymesh::ensemble

@@ -1,0 +1,132 @@
+#include "dymesh/ensemble/sample_run.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+#include "dymesh/accel/embree_locator.h"
+#include "dymesh/analysis/summary.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/mesh_import.h"
+#include "dymesh/io/scenario_json.h"
+
+namespace dymesh::ensemble {
+namespace {
+
+using Json = nlohmann::json;
+
+// the quantities of each body the statistics track
+void AddOutputs(const BodySummary& b, const OutputUnits& u, std::map<std::string, double>* out) {
+  (*out)[b.name + ".delta_v"] = b.delta_v * u.speed;
+  (*out)[b.name + ".pdof_deg"] = b.pdof_deg;
+  (*out)[b.name + ".peak_acceleration_g"] = b.peak_accel / 9.80665;
+  (*out)[b.name + ".max_crush"] = b.max_crush * u.length;
+  (*out)[b.name + ".crush_energy"] = b.crush_energy * u.energy;
+}
+
+Json Vector(const Vec3& v, double scale) { return {v.x() * scale, v.y() * scale, v.z() * scale}; }
+
+// the record's body entry (scenario units)
+Json BodyJson(const BodySummary& b, const RigidState& final_state, const OutputUnits& u) {
+  Json c = Json::array();
+  for (double x : b.crush_profile.crush) c.push_back(x * u.length);
+  return {{"name", b.name}, {"delta_v", b.delta_v * u.speed}, {"delta_v_earth", Vector(b.delta_v_earth, u.speed)},
+          {"pdof_deg", b.pdof_deg}, {"peak_acceleration_g", b.peak_accel / 9.80665},
+          {"average_acceleration_g", b.average_accel / 9.80665}, {"max_crush", b.max_crush * u.length},
+          {"crush_energy", b.crush_energy * u.energy}, {"c", c},
+          {"final_position", Vector(final_state.position, u.length)},
+          {"final_heading_deg", final_state.yaw * kRadToDeg}, {"final_velocity", Vector(final_state.velocity, u.speed)}};
+}
+
+// the fields every record has, whatever became of the sample
+Json RecordHead(const Spec& spec, int index, const std::vector<double>& values) {
+  Json inputs = Json::object();
+  for (std::size_t k = 0; k < spec.inputs.size(); ++k) inputs[spec.inputs[k].name] = values[k];
+  return {{"index", index}, {"spec_hash", HashText(spec.hash)}, {"engine_version", kEngineVersion}, {"inputs", inputs}};
+}
+
+}  // namespace
+
+TriMesh MeshCache::Get(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
+  // the key: everything BuildBodyMesh reads
+  const std::string key = source.file + "|" + std::to_string(source.scale) + "|" + source.axes[0] + source.axes[1] +
+                          source.axes[2] + "|" + std::to_string(source.fit_length.value_or(0)) + "|" +
+                          std::to_string(source.box) + std::to_string(source.box_size.x()) +
+                          std::to_string(source.box_size.y()) + std::to_string(source.box_size.z()) + "|" +
+                          std::to_string(source.box_segments[0]) + "," + std::to_string(source.box_segments[1]) + "," +
+                          std::to_string(source.box_segments[2]) + "|" + std::to_string(source.cylinder) +
+                          std::to_string(source.cylinder_radius) + std::to_string(source.cylinder_height) +
+                          std::to_string(source.cylinder_segments) + "|" + std::to_string(source.subdivisions);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (const auto it = meshes_.find(key); it != meshes_.end()) return *it->second;
+  }
+  auto mesh = std::make_shared<const TriMesh>(BuildBodyMesh(source, scenario_file, field));
+  std::lock_guard<std::mutex> lock(mutex_);
+  return *meshes_.emplace(key, mesh).first->second;
+}
+
+Scenario SampleScenario(const Spec& spec, const std::vector<double>& values) {
+  Json j = Json::parse(spec.scenario_text);
+  for (std::size_t k = 0; k < spec.inputs.size(); ++k) {
+    const Input& in = spec.inputs[k];
+    if (values[k] < in.low || values[k] > in.high)
+      throw InputError(spec.file, "inputs[" + std::to_string(k) + "].bounds",
+                       "sample value " + std::to_string(values[k]) + " of \"" + in.name + "\" is outside its bounds");
+    j[Json::json_pointer(in.pointer)] = values[k];
+  }
+  return ParseScenario(j.dump(), spec.scenario_file);
+}
+
+SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, MeshCache* meshes) {
+  SampleRecord r;
+  r.index = index;
+  Json record = RecordHead(spec, index, values);
+  try {
+    const Scenario scenario = SampleScenario(spec, values);
+    const auto models = BuildBodyModels(scenario, [&](const MeshSource& source, const std::string& field) {
+      return meshes->Get(source, scenario.file, field);
+    });
+    Simulation sim(scenario, models, MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+    sim.Run();
+    const Summary s = Summarize(sim);
+    const OutputUnits u = UnitsOf(scenario.units);
+    r.status = RunStatusName(s.status);
+    Json warnings = Json::array();
+    for (const RunWarning& w : s.warnings) warnings.push_back(w.code);
+    record["status"] = r.status;
+    record["warnings"] = warnings;
+    record["energy_balance_error"] = std::isfinite(s.energy_balance_error) ? s.energy_balance_error : 0.0;
+    for (std::size_t i = 0; i < s.bodies.size(); ++i)
+      record["bodies"].push_back(BodyJson(s.bodies[i], sim.engine().state(static_cast<int>(i)).rigid, u));
+    if (s.status == RunStatus::kComplete)
+      for (const BodySummary& b : s.bodies) AddOutputs(b, u, &r.outputs);
+  } catch (const std::exception& e) {
+    // a refused sample is a record with its reason, never the end of the ensemble
+    r.status = "failed_input";
+    record["status"] = r.status;
+    record["message"] = e.what();
+  }
+  r.line = record.dump();
+  return r;
+}
+
+bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
+  const Json j = Json::parse(line, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("index") || !j.contains("status")) return false;
+  if (j.value("spec_hash", "") != HashText(spec.hash)) return false;
+  out->index = j["index"].get<int>();
+  out->status = j["status"].get<std::string>();
+  out->line = line;
+  out->outputs.clear();
+  if (out->status == "complete" && j.contains("bodies")) {
+    for (const Json& b : j["bodies"]) {
+      const std::string name = b["name"].get<std::string>();
+      for (const char* q : {"delta_v", "pdof_deg", "peak_acceleration_g", "max_crush", "crush_energy"})
+        out->outputs[name + "." + q] = b[q].get<double>();
+    }
+  }
+  return true;
+}
+
+}  // namespace dymesh::ensemble

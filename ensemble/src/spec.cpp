@@ -1,0 +1,212 @@
+#include "dymesh/ensemble/spec.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "dymesh/core/scenario.h"
+#include "dymesh/ensemble/random_stream.h"
+#include "dymesh/io/scenario_json.h"
+
+namespace dymesh::ensemble {
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+// what the spec is read from, for messages
+struct Reader {
+  std::string file;
+  [[noreturn]] void Fail(const std::string& field, const std::string& message) const {
+    throw InputError(file, field, message);
+  }
+  const Json& Require(const Json& object, const std::string& path, const char* key) const {
+    if (!object.is_object() || !object.contains(key)) Fail(path.empty() ? key : path + "." + key, "missing required key");
+    return object.at(key);
+  }
+  double Number(const Json& j, const std::string& field) const {
+    if (!j.is_number() || !std::isfinite(j.get<double>())) Fail(field, "expected a finite number, got " + j.dump());
+    return j.get<double>();
+  }
+};
+
+std::string ReadText(const std::string& path, const std::string& spec_file, const std::string& field) {
+  if (const std::string problem = NotARegularFile(path); !problem.empty())
+    throw InputError(spec_file, field, problem + ": " + path);
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// bodies[0].initial.speed -> /bodies/0/initial/speed
+std::string PointerOf(const Reader& r, const std::string& path, const std::string& field) {
+  std::string pointer;
+  std::string token;
+  for (std::size_t i = 0; i <= path.size(); ++i) {
+    const char c = i < path.size() ? path[i] : '.';
+    if (c == '.' || c == '[' || c == ']') {
+      if (!token.empty()) pointer += "/" + token;
+      token.clear();
+      continue;
+    }
+    token += c;
+  }
+  if (pointer.empty()) r.Fail(field, "expected a JSON path into the scenario such as bodies[0].initial.speed");
+  return pointer;
+}
+
+// one distribution: {"KIND": {parameters}}
+Distribution ParseDistribution(const Reader& r, const Json& j, const std::string& field) {
+  if (!j.is_object() || j.size() != 1) r.Fail(field, "expected one of {\"fixed\": ...}, {\"uniform\": ...}, {\"normal\": ...}, "
+                                                     "{\"truncated_normal\": ...}, {\"triangular\": ...}, {\"lognormal\": ...}, {\"discrete\": ...}");
+  const std::string kind = j.begin().key();
+  const Json& p = j.begin().value();
+  const std::string at = field + "." + kind;
+  auto num = [&](const char* key) { return r.Number(r.Require(p, at, key), at + "." + key); };
+  Distribution d;
+  if (kind == "fixed") {
+    d.kind = DistributionKind::kFixed, d.a = r.Number(p, at);
+  } else if (kind == "uniform") {
+    d.kind = DistributionKind::kUniform, d.a = num("low"), d.b = num("high");
+    if (!(d.b > d.a)) r.Fail(at + ".high", "expected high > low");
+  } else if (kind == "normal" || kind == "truncated_normal") {
+    d.kind = kind == "normal" ? DistributionKind::kNormal : DistributionKind::kTruncatedNormal;
+    // mean and sd, or a value with its 95 % band (sd = band / 1.96)
+    if (p.contains("band95")) {
+      d.a = num("value"), d.b = num("band95") / 1.959963984540054;
+    } else {
+      d.a = num("mean"), d.b = num("sd");
+    }
+    if (!(d.b > 0.0)) r.Fail(at, "expected a standard deviation (or band95) > 0");
+    if (d.kind == DistributionKind::kTruncatedNormal) {
+      d.c = num("low"), d.d = num("high");
+      if (!(d.d > d.c)) r.Fail(at + ".high", "expected high > low");
+    }
+  } else if (kind == "triangular") {
+    d.kind = DistributionKind::kTriangular, d.a = num("low"), d.b = num("mode"), d.c = num("high");
+    if (!(d.a <= d.b && d.b <= d.c && d.c > d.a)) r.Fail(at, "expected low <= mode <= high, low < high");
+  } else if (kind == "lognormal") {
+    d.kind = DistributionKind::kLognormal, d.a = num("median"), d.b = num("sigma");
+    if (!(d.a > 0.0 && d.b > 0.0)) r.Fail(at, "expected median > 0 and sigma > 0");
+  } else if (kind == "discrete") {
+    d.kind = DistributionKind::kDiscrete;
+    const Json& values = r.Require(p, at, "values");
+    if (!values.is_array() || values.empty()) r.Fail(at + ".values", "expected a non-empty array of numbers");
+    double total = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      d.values.push_back(r.Number(values[i], at + ".values[" + std::to_string(i) + "]"));
+      const double w = p.contains("weights") ? r.Number(p["weights"].at(i), at + ".weights[" + std::to_string(i) + "]") : 1.0;
+      if (!(w > 0.0)) r.Fail(at + ".weights[" + std::to_string(i) + "]", "expected a weight > 0");
+      d.cumulative.push_back(total += w);
+    }
+  } else {
+    r.Fail(field, "unknown distribution \"" + kind + "\"");
+  }
+  return d;
+}
+
+// the distribution's support must meet the bounds, and its likely range lie inside them
+void CheckBounds(const Reader& r, const Input& in, const std::string& field) {
+  const double lo = Quantile(in.distribution, 1e-6), hi = Quantile(in.distribution, 1 - 1e-6);
+  if (hi < in.low || lo > in.high)
+    r.Fail(field, "the bounds [" + std::to_string(in.low) + ", " + std::to_string(in.high) +
+                      "] exclude the distribution's support: no sample could be drawn");
+}
+
+Input ParseInput(const Reader& r, const Json& j, const Json& scenario, const std::string& field) {
+  Input in;
+  const Json& name = r.Require(j, field, "name");
+  if (!name.is_string() || name.get<std::string>().empty()) r.Fail(field + ".name", "expected a non-empty name");
+  in.name = name.get<std::string>();
+  const Json& path = r.Require(j, field, "path");
+  if (!path.is_string()) r.Fail(field + ".path", "expected a JSON path string");
+  in.path = path.get<std::string>();
+  in.pointer = PointerOf(r, in.path, field + ".path");
+  // the path must reach into the scenario: its parent must exist there
+  const Json::json_pointer pointer(in.pointer);
+  if (!scenario.contains(pointer.parent_pointer()))
+    r.Fail(field + ".path", "\"" + in.path + "\" does not lead into the scenario (its parent is missing)");
+  in.distribution = ParseDistribution(r, r.Require(j, field, "distribution"), field + ".distribution");
+  if (j.contains("bounds")) {
+    const Json& b = j["bounds"];
+    if (!b.is_array() || b.size() != 2) r.Fail(field + ".bounds", "expected [low, high]");
+    in.low = r.Number(b[0], field + ".bounds[0]"), in.high = r.Number(b[1], field + ".bounds[1]");
+    if (!(in.high >= in.low)) r.Fail(field + ".bounds", "expected low <= high");
+    CheckBounds(r, in, field + ".bounds");
+  }
+  return in;
+}
+
+}  // namespace
+
+std::string HashText(std::uint64_t hash) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+Spec LoadSpec(const std::string& path) {
+  const Reader r{path};
+  Spec spec;
+  spec.file = path;
+  Json j;
+  try {
+    j = Json::parse(ReadText(path, path, "(file)"));
+  } catch (const Json::parse_error& e) {
+    r.Fail("(json)", std::string("malformed JSON: ") + e.what());
+  }
+  if (!j.is_object()) r.Fail("(root)", "expected an object");
+  for (const auto& item : j.items())
+    if (item.key() != "scenario" && item.key() != "inputs" && item.key() != "design" && item.key() != "samples" &&
+        item.key() != "seed" && item.key() != "thresholds")
+      r.Fail(item.key(), "unknown key; allowed keys: scenario, inputs, design, samples, seed, thresholds");
+  // the base scenario, relative to the spec
+  const Json& scenario = r.Require(j, "", "scenario");
+  if (!scenario.is_string()) r.Fail("scenario", "expected a scenario file name");
+  fs::path base(scenario.get<std::string>());
+  if (base.is_relative()) base = fs::absolute(fs::path(path)).parent_path() / base;
+  spec.scenario_file = base.lexically_normal().string();
+  spec.scenario_text = ReadText(spec.scenario_file, path, "scenario");
+  LoadScenario(spec.scenario_file);  // the base must be valid on its own
+  const Json scenario_json = Json::parse(spec.scenario_text);
+  // inputs, design, size, seed, thresholds
+  const Json& inputs = r.Require(j, "", "inputs");
+  if (!inputs.is_array()) r.Fail("inputs", "expected an array");
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    spec.inputs.push_back(ParseInput(r, inputs[i], scenario_json, "inputs[" + std::to_string(i) + "]"));
+  if (j.contains("design")) {
+    const std::string d = j["design"].is_string() ? j["design"].get<std::string>() : "";
+    if (d == "monte_carlo") spec.design = Design::kMonteCarlo;
+    else if (d == "latin_hypercube") spec.design = Design::kLatinHypercube;
+    else r.Fail("design", "expected \"monte_carlo\" or \"latin_hypercube\", got " + j["design"].dump());
+  }
+  if (j.contains("samples")) {
+    const double n = r.Number(j["samples"], "samples");
+    if (n < 1 || n > 1e7 || std::floor(n) != n) r.Fail("samples", "expected an integer in 1..1e7");
+    spec.samples = static_cast<int>(n);
+  }
+  if (j.contains("seed")) {
+    const double s = r.Number(j["seed"], "seed");
+    if (s < 0 || s > 9.007e15 || std::floor(s) != s) r.Fail("seed", "expected a non-negative integer");
+    spec.seed = static_cast<std::uint64_t>(s);
+  }
+  if (j.contains("thresholds"))
+    for (std::size_t i = 0; i < j["thresholds"].size(); ++i) {
+      const std::string at = "thresholds[" + std::to_string(i) + "]";
+      const Json& t = j["thresholds"][i];
+      const Json& output = r.Require(t, at, "output");
+      if (!output.is_string()) r.Fail(at + ".output", "expected an output name such as \"p406.delta_v\"");
+      spec.thresholds.push_back({output.get<std::string>(), r.Number(r.Require(t, at, "above"), at + ".above")});
+    }
+  // the hash covers what the samples depend on: the spec itself and the base scenario's text
+  spec.hash = TextHash(j.dump() + "\n" + spec.scenario_text);
+  return spec;
+}
+
+}  // namespace dymesh::ensemble

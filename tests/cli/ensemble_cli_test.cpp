@@ -1,0 +1,145 @@
+// dymesh ensemble through the command: byte-identical outputs at 1 and 2 threads and across
+// shards, resume after SIGKILL, replay equal to its record, clear errors for bad specs.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "../ensemble/box_spec.h"
+#include "process.h"
+
+namespace {
+
+using dymesh::testing::ProcessResult;
+using dymesh::testing::ReadFile;
+namespace fs = std::filesystem;
+
+class Ensemble : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("dymesh_ensemble_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  ProcessResult Dymesh(const std::vector<std::string>& args) const {
+    std::vector<std::string> argv = {DYMESH_CLI};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return dymesh::testing::RunProcess(argv, dir_ / "process", 300.0);
+  }
+  // line `index` of a samples.jsonl
+  static std::string Line(const fs::path& file, int index) {
+    std::istringstream in(ReadFile(file));
+    std::string line;
+    for (int i = 0; i <= index; ++i) std::getline(in, line);
+    return line;
+  }
+  fs::path dir_;
+};
+
+TEST_F(Ensemble, SameBytesAtOneAndTwoThreadsAndOrderedByIndex) {
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 12);
+  for (const char* threads : {"1", "2"}) {
+    const ProcessResult r = Dymesh({"ensemble", spec, "--quiet", "--threads", threads, "--out", (dir_ / threads).string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(ReadFile(dir_ / "1" / "samples.jsonl"), ReadFile(dir_ / "2" / "samples.jsonl"));
+  EXPECT_EQ(ReadFile(dir_ / "1" / "ensemble.json"), ReadFile(dir_ / "2" / "ensemble.json"));
+  for (int i = 0; i < 12; ++i) EXPECT_EQ(nlohmann::json::parse(Line(dir_ / "1" / "samples.jsonl", i))["index"], i);
+  const nlohmann::json stats = nlohmann::json::parse(ReadFile(dir_ / "1" / "ensemble.json"));
+  EXPECT_EQ(stats["status_counts"]["complete"], 12);
+  // box into a wall at 25..35 mph with e 0..0.2: delta-V between v and 1.2 v
+  EXPECT_GT(stats["outputs"]["box.delta_v"]["min"].get<double>(), 25.0);
+  EXPECT_LT(stats["outputs"]["box.delta_v"]["max"].get<double>(), 42.0);
+  EXPECT_FALSE(fs::exists(dir_ / "1" / "samples.journal.jsonl"));
+}
+
+TEST_F(Ensemble, ThreeShardsMergedEqualOneRun) {
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 10);
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "whole").string()}).exit_code, 0);
+  std::vector<std::string> merge = {"ensemble", "merge", spec, "--out", (dir_ / "merged").string()};
+  for (int k = 1; k <= 3; ++k) {
+    const std::string out = (dir_ / ("shard" + std::to_string(k))).string();
+    ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--shard", std::to_string(k) + "/3", "--out", out}).exit_code, 0);
+    merge.push_back(out);
+  }
+  const ProcessResult r = Dymesh(merge);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(ReadFile(dir_ / "merged" / "samples.jsonl"), ReadFile(dir_ / "whole" / "samples.jsonl"));
+  EXPECT_EQ(ReadFile(dir_ / "merged" / "ensemble.json"), ReadFile(dir_ / "whole" / "ensemble.json"));
+  // the third shard (samples 2, 5, 8) missing: refused, naming the first sample not run
+  const ProcessResult missing = Dymesh({"ensemble", "merge", spec, "--out", (dir_ / "m2").string(), merge[5], merge[6]});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("sample 2 is in no shard"), std::string::npos) << missing.err;
+}
+
+TEST_F(Ensemble, KilledRunResumesToTheSameBytes) {
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 40);
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "whole").string()}).exit_code, 0);
+  // a run killed (SIGKILL) once a few records are in its journal
+  const fs::path out = dir_ / "killed";
+  fs::create_directories(dir_ / "p");
+  const auto p = dymesh::testing::StartProcess({DYMESH_CLI, "ensemble", spec, "--threads", "1", "--out", out.string()},
+                                               dir_ / "p" / "out", dir_ / "p" / "err");
+  const fs::path journal = out / "samples.journal.jsonl";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const std::string text = ReadFile(journal);
+    if (std::count(text.begin(), text.end(), '\n') >= 5) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(p.pid, SIGKILL);
+  dymesh::testing::WaitProcess(p, 30.0);
+  ASSERT_FALSE(fs::exists(out / "samples.jsonl")) << "the run finished before it was killed";
+  const ProcessResult resumed = Dymesh({"ensemble", spec, "--quiet", "--out", out.string()});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find(" resumed"), std::string::npos);
+  EXPECT_EQ(resumed.out.find(" 0 resumed"), std::string::npos) << resumed.out;
+  EXPECT_EQ(ReadFile(out / "samples.jsonl"), ReadFile(dir_ / "whole" / "samples.jsonl"));
+  EXPECT_EQ(ReadFile(out / "ensemble.json"), ReadFile(dir_ / "whole" / "ensemble.json"));
+}
+
+TEST_F(Ensemble, ReplayGivesTheRecordAndTheFullOutputs) {
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 8);
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "all").string()}).exit_code, 0);
+  const ProcessResult r = Dymesh({"ensemble", "replay", spec, "--index", "5", "--out", (dir_ / "five").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(ReadFile(dir_ / "five" / "record.json"), Line(dir_ / "all" / "samples.jsonl", 5) + "\n");
+  for (const char* name : {"summary.json", "report.html", "history.csv", "box_deformed.ply"})
+    EXPECT_TRUE(fs::exists(dir_ / "five" / name)) << name;
+  const ProcessResult bad = Dymesh({"ensemble", "replay", spec, "--index", "8", "--out", (dir_ / "x").string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--index: expected a sample index in 0..7, got 8"), std::string::npos) << bad.err;
+}
+
+TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
+  struct Case {
+    std::string extra, message;
+  };
+  const Case cases[] = {
+      {R"(, {"name": "x", "path": "vehicles[3].mass", "distribution": {"fixed": 1}})",
+       "inputs[2].path: \"vehicles[3].mass\" does not lead into the scenario"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"normal": {"mean": 0.3, "sd": -1}}})",
+       "inputs[2].distribution.normal: expected a standard deviation (or band95) > 0"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"uniform": {"low": 2, "high": 3}}, "bounds": [0, 1]})",
+       "inputs[2].bounds: the bounds [0.000000, 1.000000] exclude the distribution's support"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"gamma": {"k": 2}}})",
+       "inputs[2].distribution: unknown distribution \"gamma\""},
+  };
+  for (const Case& c : cases) {
+    const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 5, "latin_hypercube", c.extra);
+    const ProcessResult r = Dymesh({"ensemble", spec, "--out", (dir_ / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << c.extra;
+    EXPECT_NE(r.err.find("spec.json: " + c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out" / "samples.journal.jsonl"));
+  }
+  const ProcessResult missing = Dymesh({"ensemble", (dir_ / "none.json").string(), "--out", (dir_ / "out").string()});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("file not found"), std::string::npos) << missing.err;
+}
+
+}  // namespace
