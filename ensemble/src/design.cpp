@@ -22,14 +22,22 @@ DesignTable::DesignTable(const Spec& spec) : spec_(spec) {
 }
 
 std::vector<double> DesignTable::Values(int sample) const {
-  std::vector<double> values;
+  // each input's uniform number; Latin hypercube places it inside the sample's stratum
+  std::vector<double> u;
   for (std::size_t k = 0; k < spec_.inputs.size(); ++k) {
-    const Input& in = spec_.inputs[k];
-    double u = Uniform(spec_.seed, TextHash(in.name), sample, 0);
-    // Latin hypercube: the draw placed inside the sample's stratum
-    if (spec_.design == Design::kLatinHypercube) u = (strata_[k][sample] + u) / spec_.samples;
-    values.push_back(Quantile(in.distribution, u));
+    u.push_back(Uniform(spec_.seed, TextHash(spec_.inputs[k].name), sample, 0));
+    if (spec_.design == Design::kLatinHypercube) u[k] = (strata_[k][sample] + u[k]) / spec_.samples;
   }
+  // Gaussian copula: the correlated inputs' normal scores mixed by the Cholesky factor
+  const Correlation& c = spec_.correlation;
+  if (!c.inputs.empty()) {
+    Eigen::VectorXd z(c.inputs.size());
+    for (std::size_t a = 0; a < c.inputs.size(); ++a) z[a] = NormalQuantile(u[c.inputs[a]]);
+    const Eigen::VectorXd mixed = c.cholesky * z;
+    for (std::size_t a = 0; a < c.inputs.size(); ++a) u[c.inputs[a]] = NormalCdf(mixed[a]);
+  }
+  std::vector<double> values;
+  for (std::size_t k = 0; k < spec_.inputs.size(); ++k) values.push_back(Quantile(spec_.inputs[k].distribution, u[k]));
   return values;
 }
 

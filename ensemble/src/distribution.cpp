@@ -28,7 +28,57 @@ double AcklamQuantile(double p) {
          (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1);
 }
 
+// ln B(a, b)
+double LogBeta(double a, double b) { return std::lgamma(a) + std::lgamma(b) - std::lgamma(a + b); }
+
+// the continued fraction of the incomplete beta (modified Lentz)
+double BetaContinuedFraction(double a, double b, double x) {
+  constexpr double kTiny = 1e-300;
+  double c = 1.0, d = 1.0 - (a + b) * x / (a + 1.0);
+  if (std::abs(d) < kTiny) d = kTiny;
+  d = 1.0 / d;
+  double h = d;
+  for (int m = 1; m <= 300; ++m) {
+    const double m2 = 2.0 * m;
+    for (const double aa : {m * (b - m) * x / ((a + m2 - 1) * (a + m2)), -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1))}) {
+      d = 1.0 + aa * d;
+      if (std::abs(d) < kTiny) d = kTiny;
+      c = 1.0 + aa / c;
+      if (std::abs(c) < kTiny) c = kTiny;
+      d = 1.0 / d;
+      h *= d * c;
+    }
+    if (std::abs(d * c - 1.0) < 1e-16) break;
+  }
+  return h;
+}
+
+// the beta(a, b) quantile on [0, 1]: bisection on the regularized incomplete beta (monotone)
+double BetaQuantile(double a, double b, double u) {
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (IncompleteBeta(a, b, mid) < u ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// PERT's beta shape parameters
+void PertShape(const Distribution& d, double* alpha, double* beta) {
+  *alpha = 1.0 + 4.0 * (d.b - d.a) / (d.c - d.a);
+  *beta = 1.0 + 4.0 * (d.c - d.b) / (d.c - d.a);
+}
+
 }  // namespace
+
+double IncompleteBeta(double a, double b, double x) {
+  if (x <= 0.0) return 0.0;
+  if (x >= 1.0) return 1.0;
+  const double front = std::exp(a * std::log(x) + b * std::log1p(-x) - LogBeta(a, b));
+  // the fraction converges fast on the side of the mean
+  if (x < (a + 1.0) / (a + b + 2.0)) return front * BetaContinuedFraction(a, b, x) / a;
+  return 1.0 - front * BetaContinuedFraction(b, a, 1.0 - x) / b;
+}
 
 double NormalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
@@ -57,6 +107,12 @@ double Quantile(const Distribution& dist, double u) {
       return u < split ? lo + std::sqrt(u * (hi - lo) * (mode - lo)) : hi - std::sqrt((1 - u) * (hi - lo) * (hi - mode));
     }
     case DistributionKind::kLognormal: return dist.a * std::exp(dist.b * NormalQuantile(u));
+    case DistributionKind::kBeta: return dist.c + (dist.d - dist.c) * BetaQuantile(dist.a, dist.b, u);
+    case DistributionKind::kPert: {
+      double alpha = 0.0, beta = 0.0;
+      PertShape(dist, &alpha, &beta);
+      return dist.a + (dist.c - dist.a) * BetaQuantile(alpha, beta, u);
+    }
     case DistributionKind::kDiscrete: {
       const auto it = std::upper_bound(dist.cumulative.begin(), dist.cumulative.end(), u * dist.cumulative.back());
       return dist.values[std::min<std::size_t>(it - dist.cumulative.begin(), dist.values.size() - 1)];
@@ -78,6 +134,8 @@ double Mean(const Distribution& dist) {
     }
     case DistributionKind::kTriangular: return (dist.a + dist.b + dist.c) / 3.0;
     case DistributionKind::kLognormal: return dist.a * std::exp(dist.b * dist.b / 2);
+    case DistributionKind::kBeta: return dist.c + (dist.d - dist.c) * dist.a / (dist.a + dist.b);
+    case DistributionKind::kPert: return (dist.a + 4.0 * dist.b + dist.c) / 6.0;
     case DistributionKind::kDiscrete: {
       double mean = 0.0, previous = 0.0;
       for (std::size_t i = 0; i < dist.values.size(); ++i) {
@@ -99,6 +157,8 @@ const char* DistributionName(DistributionKind kind) {
     case DistributionKind::kTriangular: return "triangular";
     case DistributionKind::kLognormal: return "lognormal";
     case DistributionKind::kDiscrete: return "discrete";
+    case DistributionKind::kBeta: return "beta";
+    case DistributionKind::kPert: return "pert";
   }
   return "fixed";
 }

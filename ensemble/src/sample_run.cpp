@@ -6,6 +6,7 @@
 
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
+#include "dymesh/core/units.h"
 #include "dymesh/io/body_models.h"
 #include "dymesh/io/mesh_import.h"
 #include "dymesh/io/scenario_json.h"
@@ -66,6 +67,14 @@ TriMesh MeshCache::Get(const MeshSource& source, const std::string& scenario_fil
   return *meshes_.emplace(key, mesh).first->second;
 }
 
+Crash3Stiffness Crash3ToAB(const Crash3Preset& p, double b0, double b1) {
+  // in US units the speeds go to in/s (17.6 per mph) and the mass is W / g in lb s^2 / in
+  const double speed = p.us ? 17.6 : 1.0;
+  const double mass = p.us ? p.mass / units::kPoundMass / (units::kStandardGravity / units::kInch) : p.mass;
+  const double v0 = b0 * speed, slope = b1 * speed;
+  return {mass * v0 * slope / p.width, mass * slope * slope / p.width};
+}
+
 Scenario SampleScenario(const Spec& spec, const std::vector<double>& values) {
   Json j = Json::parse(spec.scenario_text);
   for (std::size_t k = 0; k < spec.inputs.size(); ++k) {
@@ -73,7 +82,12 @@ Scenario SampleScenario(const Spec& spec, const std::vector<double>& values) {
     if (values[k] < in.low || values[k] > in.high)
       throw InputError(spec.file, "inputs[" + std::to_string(k) + "].bounds",
                        "sample value " + std::to_string(values[k]) + " of \"" + in.name + "\" is outside its bounds");
-    j[Json::json_pointer(in.pointer)] = values[k];
+    if (!in.pointer.empty()) j[Json::json_pointer(in.pointer)] = values[k];
+  }
+  // CRASH3 presets: the surface's A and B from the sampled b0 and b1, together
+  for (const Crash3Preset& p : spec.crash3) {
+    const Crash3Stiffness k = Crash3ToAB(p, values[p.b0_input], values[p.b1_input]);
+    j[Json::json_pointer(p.pointer)] = {{"A", k.a}, {"B", k.b}};
   }
   return ParseScenario(j.dump(), spec.scenario_file);
 }
@@ -119,6 +133,9 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
   out->status = j["status"].get<std::string>();
   out->line = line;
   out->outputs.clear();
+  out->inputs.clear();
+  if (j.contains("inputs"))
+    for (const Input& in : spec.inputs) out->inputs.push_back(j["inputs"].value(in.name, 0.0));
   if (out->status == "complete" && j.contains("bodies")) {
     for (const Json& b : j["bodies"]) {
       const std::string name = b["name"].get<std::string>();

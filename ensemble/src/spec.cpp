@@ -64,7 +64,8 @@ std::string PointerOf(const Reader& r, const std::string& path, const std::strin
 // one distribution: {"KIND": {parameters}}
 Distribution ParseDistribution(const Reader& r, const Json& j, const std::string& field) {
   if (!j.is_object() || j.size() != 1) r.Fail(field, "expected one of {\"fixed\": ...}, {\"uniform\": ...}, {\"normal\": ...}, "
-                                                     "{\"truncated_normal\": ...}, {\"triangular\": ...}, {\"lognormal\": ...}, {\"discrete\": ...}");
+                                                     "{\"truncated_normal\": ...}, {\"triangular\": ...}, {\"pert\": ...}, {\"beta\": ...}, "
+                                                     "{\"lognormal\": ...}, {\"discrete\": ...}");
   const std::string kind = j.begin().key();
   const Json& p = j.begin().value();
   const std::string at = field + "." + kind;
@@ -94,6 +95,14 @@ Distribution ParseDistribution(const Reader& r, const Json& j, const std::string
   } else if (kind == "lognormal") {
     d.kind = DistributionKind::kLognormal, d.a = num("median"), d.b = num("sigma");
     if (!(d.a > 0.0 && d.b > 0.0)) r.Fail(at, "expected median > 0 and sigma > 0");
+  } else if (kind == "beta") {
+    d.kind = DistributionKind::kBeta, d.a = num("alpha"), d.b = num("beta");
+    d.c = p.contains("low") ? num("low") : 0.0, d.d = p.contains("high") ? num("high") : 1.0;
+    if (!(d.a > 0.0 && d.b > 0.0)) r.Fail(at, "expected alpha > 0 and beta > 0");
+    if (!(d.d > d.c)) r.Fail(at + ".high", "expected high > low");
+  } else if (kind == "pert") {
+    d.kind = DistributionKind::kPert, d.a = num("low"), d.b = num("mode"), d.c = num("high");
+    if (!(d.a <= d.b && d.b <= d.c && d.c > d.a)) r.Fail(at, "expected low <= mode <= high, low < high");
   } else if (kind == "discrete") {
     d.kind = DistributionKind::kDiscrete;
     const Json& values = r.Require(p, at, "values");
@@ -143,6 +152,77 @@ Input ParseInput(const Reader& r, const Json& j, const Json& scenario, const std
   return in;
 }
 
+// "crash3": [{name, body, surface, width, weight (US, lb) | mass (SI, kg), b0, b1}]: two inputs and
+// the preset that turns them into the surface's A and B
+void ParseCrash3(const Reader& r, const Json& list, const Json& scenario, Spec* spec) {
+  if (!list.is_array()) r.Fail("crash3", "expected an array of presets");
+  const bool us = scenario.value("units", "US") == "US";
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string at = "crash3[" + std::to_string(i) + "]";
+    const Json& j = list[i];
+    const Json& name = r.Require(j, at, "name");
+    if (!name.is_string() || name.get<std::string>().empty()) r.Fail(at + ".name", "expected a non-empty name");
+    const double body = r.Number(r.Require(j, at, "body"), at + ".body");
+    const std::size_t bodies = scenario.contains("bodies") ? scenario["bodies"].size() : 0;
+    if (body < 0 || body >= bodies || std::floor(body) != body)
+      r.Fail(at + ".body", "expected a body index of the scenario, 0.." + std::to_string(static_cast<int>(bodies) - 1));
+    const Json& surface = r.Require(j, at, "surface");
+    const std::string s = surface.is_string() ? surface.get<std::string>() : "";
+    if (s != "front" && s != "right" && s != "back" && s != "left" && s != "top" && s != "bottom")
+      r.Fail(at + ".surface", "expected front, right, back, left, top or bottom");
+    Crash3Preset preset;
+    preset.us = us;
+    preset.pointer = "/bodies/" + std::to_string(static_cast<int>(body)) + "/stiffness/" + s;
+    preset.width = r.Number(r.Require(j, at, "width"), at + ".width");
+    const char* mass_key = us ? "weight" : "mass";
+    preset.mass = r.Number(r.Require(j, at, mass_key), at + "." + mass_key) * (us ? 0.45359237 : 1.0);
+    if (!(preset.width > 0.0) || !(preset.mass > 0.0)) r.Fail(at, std::string("expected width > 0 and ") + mass_key + " > 0");
+    // b0 and b1 are inputs of their own (their own streams), positive everywhere they can fall
+    for (const char* coefficient : {"b0", "b1"}) {
+      Input in;
+      in.name = name.get<std::string>() + "." + coefficient;
+      in.distribution = ParseDistribution(r, r.Require(j, at, coefficient), at + "." + coefficient);
+      if (!(Quantile(in.distribution, 1e-9) > 0.0)) r.Fail(at + "." + coefficient, "expected a distribution of positive values");
+      (std::string(coefficient) == "b0" ? preset.b0_input : preset.b1_input) = static_cast<int>(spec->inputs.size());
+      spec->inputs.push_back(in);
+    }
+    spec->crash3.push_back(preset);
+  }
+}
+
+// "correlation": {"inputs": [names], "rank_matrix": [[...]]}: Spearman correlations, positive definite
+void ParseCorrelation(const Reader& r, const Json& j, Spec* spec) {
+  const Json& names = r.Require(j, "correlation", "inputs");
+  const Json& matrix = r.Require(j, "correlation", "rank_matrix");
+  if (!names.is_array() || names.size() < 2) r.Fail("correlation.inputs", "expected at least two input names");
+  const int n = static_cast<int>(names.size());
+  for (int a = 0; a < n; ++a) {
+    int index = -1;
+    for (std::size_t k = 0; k < spec->inputs.size(); ++k)
+      if (names[a].is_string() && spec->inputs[k].name == names[a].get<std::string>()) index = static_cast<int>(k);
+    if (index < 0) r.Fail("correlation.inputs[" + std::to_string(a) + "]", "expected the name of an input, got " + names[a].dump());
+    spec->correlation.inputs.push_back(index);
+  }
+  if (!matrix.is_array() || static_cast<int>(matrix.size()) != n)
+    r.Fail("correlation.rank_matrix", "expected a " + std::to_string(n) + " x " + std::to_string(n) + " matrix");
+  Eigen::MatrixXd pearson(n, n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      const std::string at = "correlation.rank_matrix[" + std::to_string(a) + "][" + std::to_string(b) + "]";
+      if (!matrix[a].is_array() || static_cast<int>(matrix[a].size()) != n) r.Fail(at, "expected a square matrix");
+      const double rho = r.Number(matrix[a][b], at);
+      if (a == b && rho != 1.0) r.Fail(at, "expected 1 on the diagonal");
+      if (std::abs(rho) > 1.0) r.Fail(at, "expected a correlation in [-1, 1]");
+      if (rho != r.Number(matrix[b][a], at)) r.Fail(at, "expected a symmetric matrix");
+      // the normal scores' correlation that gives this rank correlation
+      pearson(a, b) = 2.0 * std::sin(3.14159265358979323846 * rho / 6.0);
+    }
+  Eigen::LLT<Eigen::MatrixXd> llt(pearson);
+  if (llt.info() != Eigen::Success || llt.matrixL().toDenseMatrix().diagonal().minCoeff() < 1e-12)
+    r.Fail("correlation.rank_matrix", "is not positive definite: no joint distribution has these correlations");
+  spec->correlation.cholesky = llt.matrixL();
+}
+
 }  // namespace
 
 std::string HashText(std::uint64_t hash) {
@@ -164,8 +244,8 @@ Spec LoadSpec(const std::string& path) {
   if (!j.is_object()) r.Fail("(root)", "expected an object");
   for (const auto& item : j.items())
     if (item.key() != "scenario" && item.key() != "inputs" && item.key() != "design" && item.key() != "samples" &&
-        item.key() != "seed" && item.key() != "thresholds")
-      r.Fail(item.key(), "unknown key; allowed keys: scenario, inputs, design, samples, seed, thresholds");
+        item.key() != "seed" && item.key() != "thresholds" && item.key() != "crash3" && item.key() != "correlation")
+      r.Fail(item.key(), "unknown key; allowed keys: scenario, inputs, crash3, correlation, design, samples, seed, thresholds");
   // the base scenario, relative to the spec
   const Json& scenario = r.Require(j, "", "scenario");
   if (!scenario.is_string()) r.Fail("scenario", "expected a scenario file name");
@@ -180,6 +260,11 @@ Spec LoadSpec(const std::string& path) {
   if (!inputs.is_array()) r.Fail("inputs", "expected an array");
   for (std::size_t i = 0; i < inputs.size(); ++i)
     spec.inputs.push_back(ParseInput(r, inputs[i], scenario_json, "inputs[" + std::to_string(i) + "]"));
+  if (j.contains("crash3")) ParseCrash3(r, j["crash3"], scenario_json, &spec);
+  for (std::size_t a = 0; a < spec.inputs.size(); ++a)
+    for (std::size_t b = 0; b < a; ++b)
+      if (spec.inputs[a].name == spec.inputs[b].name) r.Fail("inputs", "duplicate input name \"" + spec.inputs[a].name + "\"");
+  if (j.contains("correlation")) ParseCorrelation(r, j["correlation"], &spec);
   if (j.contains("design")) {
     const std::string d = j["design"].is_string() ? j["design"].get<std::string>() : "";
     if (d == "monte_carlo") spec.design = Design::kMonteCarlo;

@@ -2,8 +2,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+
+#include "dymesh/ensemble/random_stream.h"
 
 namespace dymesh::ensemble {
 
@@ -13,6 +18,92 @@ double Percentile(const std::vector<double>& sorted, double q) {
   const std::size_t lo = static_cast<std::size_t>(std::floor(h));
   const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
   return sorted[lo] + (h - lo) * (sorted[hi] - sorted[lo]);
+}
+
+namespace {
+
+// ranks 1..n, ties averaged
+std::vector<double> Ranks(const std::vector<double>& v) {
+  std::vector<int> order(v.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return v[a] < v[b]; });
+  std::vector<double> rank(v.size());
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]]) ++j;
+    for (std::size_t k = i; k <= j; ++k) rank[order[k]] = 0.5 * (i + j) + 1.0;
+    i = j + 1;
+  }
+  return rank;
+}
+
+// Pearson correlation; 0 when either side is constant
+double Pearson(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n, my = std::accumulate(y.begin(), y.end(), 0.0) / n;
+  double sxy = 0.0, sxx = 0.0, syy = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  return sxx > 0.0 && syy > 0.0 ? sxy / std::sqrt(sxx * syy) : 0.0;
+}
+
+// a sorted copy's percentile
+double SortedPercentile(std::vector<double>& v, double q) {
+  std::sort(v.begin(), v.end());
+  return Percentile(v, q);
+}
+
+}  // namespace
+
+double Spearman(const std::vector<double>& x, const std::vector<double>& y) { return Pearson(Ranks(x), Ranks(y)); }
+
+std::vector<double> PartialRankCorrelation(const std::vector<std::vector<double>>& x, const std::vector<double>& y) {
+  const std::size_t n = y.size(), k = x.empty() ? 0 : x.front().size();
+  std::vector<double> prcc(k, 0.0);
+  // the inputs that vary, with the output, as rank columns
+  std::vector<std::vector<double>> columns;
+  std::vector<int> which;
+  for (std::size_t c = 0; c < k; ++c) {
+    std::vector<double> col(n);
+    for (std::size_t i = 0; i < n; ++i) col[i] = x[i][c];
+    if (*std::max_element(col.begin(), col.end()) == *std::min_element(col.begin(), col.end())) continue;
+    columns.push_back(Ranks(col));
+    which.push_back(static_cast<int>(c));
+  }
+  const std::vector<double> ry = Ranks(y);
+  const int m = static_cast<int>(columns.size());
+  if (m < 1 || n < static_cast<std::size_t>(m) + 2) return prcc;
+  // each input: the correlation of its ranks and the output's ranks, both with the other inputs'
+  // ranks regressed out (least squares; robust when the output follows one input exactly)
+  for (int a = 0; a < m; ++a) {
+    Eigen::MatrixXd others(n, m);  // intercept and the other columns
+    others.col(0).setOnes();
+    for (int b = 0, c = 1; b < m; ++b)
+      if (b != a) others.col(c++) = Eigen::Map<const Eigen::VectorXd>(columns[b].data(), n);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(others);
+    const Eigen::VectorXd xa = Eigen::Map<const Eigen::VectorXd>(columns[a].data(), n);
+    const Eigen::VectorXd yy = Eigen::Map<const Eigen::VectorXd>(ry.data(), n);
+    const Eigen::VectorXd rx = xa - others * qr.solve(xa), rr = yy - others * qr.solve(yy);
+    const double denominator = std::sqrt(rx.squaredNorm() * rr.squaredNorm());
+    prcc[which[a]] = denominator > 0.0 ? rx.dot(rr) / denominator : 0.0;
+  }
+  return prcc;
+}
+
+Interval Bootstrap95(const std::vector<double>& values, const std::function<double(std::vector<double>&)>& statistic,
+                     std::uint64_t seed, const std::string& stream, int resamples) {
+  const std::uint64_t id = TextHash("bootstrap " + stream);
+  std::vector<double> estimates, draw(values.size());
+  for (int b = 0; b < resamples; ++b) {
+    for (std::size_t i = 0; i < values.size(); ++i)
+      draw[i] = values[std::min(values.size() - 1, static_cast<std::size_t>(Uniform(seed, id, b, static_cast<std::uint32_t>(i)) * values.size()))];
+    estimates.push_back(statistic(draw));
+  }
+  std::sort(estimates.begin(), estimates.end());
+  return {Percentile(estimates, 0.025), Percentile(estimates, 0.975)};
 }
 
 std::map<std::string, OutputStatistics> ComputeStatistics(const std::vector<SampleRecord>& records) {
@@ -48,9 +139,40 @@ std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& reco
   for (const SampleRecord& r : records) counts[r.status] = counts.value(r.status, 0) + 1;
   j["status_counts"] = counts;
   const auto stats = ComputeStatistics(records);
-  for (const auto& [name, s] : stats)
-    j["outputs"][name] = {{"n", s.n}, {"mean", s.mean}, {"sd", s.sd}, {"min", s.min}, {"max", s.max},
-                          {"p5", s.p5}, {"p50", s.p50}, {"p95", s.p95}};
+  for (const auto& [name, s] : stats) {
+    nlohmann::json& o = j["outputs"][name];
+    o = {{"n", s.n}, {"mean", s.mean}, {"sd", s.sd}, {"min", s.min}, {"max", s.max},
+         {"p5", s.p5}, {"p50", s.p50}, {"p95", s.p95}};
+    // the output's values and inputs over the complete samples, in index order
+    std::vector<double> v;
+    std::vector<std::vector<double>> x;
+    for (const SampleRecord& r : records)
+      if (const auto it = r.outputs.find(name); it != r.outputs.end()) {
+        v.push_back(it->second);
+        x.push_back(r.inputs);
+      }
+    // bootstrap 95 % intervals of the mean and the percentiles
+    const auto mean = [](std::vector<double>& d) { return std::accumulate(d.begin(), d.end(), 0.0) / d.size(); };
+    for (const auto& [key, q] : {std::pair{"p5", 0.05}, std::pair{"p50", 0.5}, std::pair{"p95", 0.95}}) {
+      const Interval ci = Bootstrap95(v, [q = q](std::vector<double>& d) { return SortedPercentile(d, q); }, spec.seed, name + key);
+      o["ci95"][key] = {ci.low, ci.high};
+    }
+    const Interval ci = Bootstrap95(v, mean, spec.seed, name + "mean");
+    o["ci95"]["mean"] = {ci.low, ci.high};
+    // running convergence of the mean and the 5th and 95th percentiles against N
+    for (std::size_t n = 10; n <= v.size(); n = n < 20 ? 20 : n < 50 ? 50 : n * 2) {
+      std::vector<double> head(v.begin(), v.begin() + n);
+      const double m = mean(head);
+      o["convergence"].push_back({{"n", n}, {"mean", m}, {"p5", SortedPercentile(head, 0.05)}, {"p95", SortedPercentile(head, 0.95)}});
+    }
+    // sensitivity: Spearman and partial rank correlation of every input with this output
+    const std::vector<double> prcc = PartialRankCorrelation(x, v);
+    for (std::size_t k = 0; k < spec.inputs.size() && !x.empty(); ++k) {
+      std::vector<double> input(x.size());
+      for (std::size_t i = 0; i < x.size(); ++i) input[i] = x[i][k];
+      o["sensitivity"][spec.inputs[k].name] = {{"spearman", Spearman(input, v)}, {"prcc", prcc[k]}};
+    }
+  }
   // exceedance: P(output > threshold) over the complete samples
   for (const Threshold& t : spec.thresholds) {
     int above = 0, n = 0;

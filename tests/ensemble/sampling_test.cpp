@@ -11,6 +11,9 @@
 #include "dymesh/ensemble/distribution.h"
 #include "dymesh/ensemble/random_stream.h"
 #include "dymesh/ensemble/statistics.h"
+#include "dymesh/core/scenario.h"
+
+#include <fstream>
 
 namespace dymesh::ensemble {
 namespace {
@@ -52,6 +55,25 @@ TEST(Sampling, DistributionsPassKolmogorovSmirnovAtOnePercent) {
   EXPECT_LT(KolmogorovSmirnov(lognormal, [](double x) { return NormalCdf(std::log(x / 3.0) / 0.25); }, n), Critical(n));
 }
 
+TEST(Sampling, IncompleteBetaMatchesItsBinomialSum) {
+  // integer a, b: I_x(a, b) = sum_{j = a}^{a + b - 1} C(a + b - 1, j) x^j (1 - x)^(a + b - 1 - j)
+  for (double x : {0.05, 0.3, 0.5, 0.8, 0.99}) {
+    const double expected = 6 * x * x * (1 - x) * (1 - x) + 4 * x * x * x * (1 - x) + x * x * x * x;  // a = 2, b = 3
+    EXPECT_NEAR(IncompleteBeta(2, 3, x), expected, 1e-14) << x;
+    EXPECT_NEAR(IncompleteBeta(1, 1, x), x, 1e-15);
+  }
+}
+
+TEST(Sampling, BetaAndPertPassKolmogorovSmirnov) {
+  const int n = 4000;
+  Distribution beta{DistributionKind::kBeta, 2.0, 5.0, 10.0, 20.0};
+  EXPECT_LT(KolmogorovSmirnov(beta, [](double x) { return IncompleteBeta(2.0, 5.0, (x - 10.0) / 10.0); }, n), Critical(n));
+  // PERT(0, 2, 10): beta(1 + 4 * 2 / 10, 1 + 4 * 8 / 10) = beta(1.8, 4.2) on [0, 10]
+  Distribution pert{DistributionKind::kPert, 0.0, 2.0, 10.0};
+  EXPECT_LT(KolmogorovSmirnov(pert, [](double x) { return IncompleteBeta(1.8, 4.2, x / 10.0); }, n), Critical(n));
+  EXPECT_NEAR(Mean(pert), (0.0 + 8.0 + 10.0) / 6.0, 1e-15);
+}
+
 TEST(Sampling, DiscreteFollowsItsWeights) {
   Distribution d{DistributionKind::kDiscrete};
   d.values = {1.0, 2.0, 3.0};
@@ -88,6 +110,79 @@ TEST(Sampling, AddingAnInputDoesNotShiftTheOthers) {
     EXPECT_EQ(DesignTable(two).Values(i)[0], DesignTable(three).Values(i)[0]);
     EXPECT_EQ(DesignTable(two).Values(i)[1], DesignTable(three).Values(i)[1]);
   }
+}
+
+TEST(Sampling, CopulaGivesTheRankCorrelationAndRefusesImpossibleMatrices) {
+  const std::string extra = R"(, {"name": "friction", "path": "bodies[0].friction", "distribution": {"uniform": {"low": 0, "high": 1}}}],
+    "correlation": {"inputs": ["speed", "friction"], "rank_matrix": [[1, 0.7], [0.7, 1]]}, "x": [)";
+  // (the trailing "x" key is closed and refused below; a valid spec is written without it)
+  const std::string good = R"(, {"name": "friction", "path": "bodies[0].friction", "distribution": {"uniform": {"low": 0, "high": 1}}})";
+  std::string path = testing::WriteBoxSpec(::testing::TempDir() + "/copula", 3000, "monte_carlo", good);
+  // add the correlation block to the written spec
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.insert(text.rfind('}'), R"(, "correlation": {"inputs": ["speed", "friction"], "rank_matrix": [[1, 0.7], [0.7, 1]]})");
+  std::ofstream(path) << text;
+  const Spec spec = LoadSpec(path);
+  const DesignTable design(spec);
+  std::vector<double> speed, friction, restitution;
+  for (int i = 0; i < spec.samples; ++i) {
+    const std::vector<double> v = design.Values(i);
+    speed.push_back(v[0]), restitution.push_back(v[1]), friction.push_back(v[2]);
+  }
+  // sampling error of a rank correlation near 0.7 at n = 3000: (1 - rho^2) / sqrt(n) ~ 0.01; 4 sd
+  EXPECT_NEAR(Spearman(speed, friction), 0.7, 0.04);
+  EXPECT_NEAR(Spearman(speed, restitution), 0.0, 4.0 / std::sqrt(3000.0));
+  // a matrix no joint distribution has
+  text.replace(text.find("[[1, 0.7], [0.7, 1]]"), 20, "[[1, 1.0], [1.0, 1]]");
+  std::ofstream(path) << text;
+  EXPECT_THROW(LoadSpec(path), InputError);
+  (void)extra;
+}
+
+TEST(Statistics, RankSensitivityOfAnOutputThatFollowsOneInput) {
+  // y = a exactly, b independent: Spearman and PRCC 1 for a, within 3 / sqrt(n) of 0 for b
+  std::vector<SampleRecord> records;
+  const int n = 500;
+  std::vector<std::vector<double>> x;
+  std::vector<double> y, a, b;
+  for (int i = 0; i < n; ++i) {
+    a.push_back(Uniform(1, 1, i)), b.push_back(Uniform(1, 2, i));
+    x.push_back({a.back(), b.back()});
+    y.push_back(a.back());
+  }
+  EXPECT_DOUBLE_EQ(Spearman(a, y), 1.0);
+  EXPECT_NEAR(Spearman(b, y), 0.0, 3.0 / std::sqrt(n));
+  const std::vector<double> prcc = PartialRankCorrelation(x, y);
+  EXPECT_NEAR(prcc[0], 1.0, 1e-9);
+  EXPECT_NEAR(prcc[1], 0.0, 3.0 / std::sqrt(n));
+}
+
+TEST(Statistics, BootstrapIntervalOfTheMeanHasTheNormalWidth) {
+  // 400 uniform values: mean 0.5, sd 1/sqrt(12); the 95 % interval is about 2 * 1.96 sd / sqrt(n)
+  std::vector<double> v;
+  for (int i = 0; i < 400; ++i) v.push_back(Uniform(9, 3, i));
+  const Interval ci = Bootstrap95(v, [](std::vector<double>& d) {
+    double s = 0.0;
+    for (double x : d) s += x;
+    return s / d.size();
+  }, 5, "mean");
+  EXPECT_LT(ci.low, 0.5 + 0.03);
+  EXPECT_GT(ci.high, 0.5 - 0.03);
+  const double width = 2 * 1.96 / std::sqrt(12.0) / std::sqrt(400.0);
+  EXPECT_NEAR(ci.high - ci.low, width, 0.25 * width);  // 400 resamples: the width is known to ~10 %
+}
+
+TEST(Crash3, CoefficientsFromB0AndB1) {
+  // US: A = (W / g) (17.6 b0) (17.6 b1) / L, B = (W / g) (17.6 b1)^2 / L, g = 386.0886 in/s^2
+  Crash3Preset p;
+  p.us = true, p.mass = 3000 * 0.45359237, p.width = 66;
+  const Crash3Stiffness k = Crash3ToAB(p, 5.0, 1.5);
+  const double m = 3000 / 386.08858267716535;
+  EXPECT_NEAR(k.a, m * 88.0 * 26.4 / 66.0, 1e-9);
+  EXPECT_NEAR(k.b, m * 26.4 * 26.4 / 66.0, 1e-9);
+  // A / B = b0 / b1 and G = A^2 / 2B = m b0^2 / 2L (the no-damage energy per width): never independent
+  EXPECT_NEAR(k.a / k.b, 5.0 / 1.5, 1e-12);
 }
 
 TEST(Statistics, MomentsAndPercentilesOfAKnownSample) {

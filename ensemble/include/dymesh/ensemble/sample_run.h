@@ -28,7 +28,15 @@ struct SampleRecord {
   std::string line;                        ///< JSON, no newline
   std::string status;                      ///< run status, or "failed_input" when refused
   std::map<std::string, double> outputs;   ///< "BODY.QUANTITY" -> value (scenario units)
+  std::vector<double> inputs;              ///< the sample's input values, in spec order
 };
+
+/// CRASH3 2-D coefficients of a preset from b0 and b1 (the preset's units): A = m b0 b1 / L,
+/// B = m b1^2 / L; US: A [lb/in], B [lb/in^2] from b0 [mph], b1 [mph/in], weight [lb], L [in].
+struct Crash3Stiffness {
+  double a, b;
+};
+Crash3Stiffness Crash3ToAB(const Crash3Preset& preset, double b0, double b1);
 
 /// The sample's scenario: the base with `values` at the inputs' paths (InputError when refused).
 Scenario SampleScenario(const Spec& spec, const std::vector<double>& values);

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "dymesh/ensemble/distribution.h"
 
 /// An ensemble spec: a base scenario, named uncertain inputs (each a JSON path into the scenario,
@@ -15,7 +17,7 @@ enum class Design { kMonteCarlo, kLatinHypercube };
 struct Input {
   std::string name;
   std::string path;      ///< JSON path into the scenario, e.g. bodies[0].initial.speed
-  std::string pointer;   ///< the same as a JSON pointer, /bodies/0/initial/speed
+  std::string pointer;   ///< the same as a JSON pointer, /bodies/0/initial/speed; empty for a preset's input
   Distribution distribution;
   double low = -1e300, high = 1e300;  ///< hard physical bounds: a sample outside is refused
 };
@@ -24,6 +26,24 @@ struct Input {
 struct Threshold {
   std::string output;
   double above = 0.0;
+};
+
+/// CRASH3 stiffness of one body surface from sampled b0 (no-damage speed) and b1 (slope): never A
+/// and B independently. A = m b0 b1 / L, B = m b1^2 / L (m the mass, L the damage width), written
+/// as the surface's 2-D coefficients.
+struct Crash3Preset {
+  int b0_input = -1, b1_input = -1;  ///< the two inputs (named NAME.b0, NAME.b1) that carry b0 and b1
+  std::string pointer;               ///< JSON pointer of the surface object, /bodies/0/stiffness/front
+  double mass = 0.0;                 ///< [kg]
+  double width = 0.0;                ///< L, scenario length unit
+  bool us = true;                    ///< b0 in mph, b1 in mph/in, width in in; else m/s, 1/s, m
+};
+
+/// Gaussian copula over some inputs: their rank correlations as the Cholesky factor of the
+/// normal-score correlation (r = 2 sin(pi rho_s / 6)).
+struct Correlation {
+  std::vector<int> inputs;
+  Eigen::MatrixXd cholesky;
 };
 
 struct Spec {
@@ -35,6 +55,8 @@ struct Spec {
   int samples = 100;
   std::uint64_t seed = 1;
   std::vector<Threshold> thresholds;
+  std::vector<Crash3Preset> crash3;
+  Correlation correlation;
   std::uint64_t hash = 0;      ///< of the spec and the base scenario text: records carry it
 };
 

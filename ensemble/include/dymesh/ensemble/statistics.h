@@ -1,4 +1,6 @@
 #pragma once
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,6 +22,21 @@ double Percentile(const std::vector<double>& sorted, double q);
 
 /// Per output over the complete samples, in index order (so the sums are reproducible).
 std::map<std::string, OutputStatistics> ComputeStatistics(const std::vector<SampleRecord>& records);
+
+/// Spearman's rank correlation (ties get their average rank); 0 when either side is constant.
+double Spearman(const std::vector<double>& x, const std::vector<double>& y);
+
+/// Partial rank correlation of each column of `x` (n samples by k inputs) with `y`, the other
+/// columns held out (through the inverse of the rank correlation matrix); 0 for a constant input.
+std::vector<double> PartialRankCorrelation(const std::vector<std::vector<double>>& x, const std::vector<double>& y);
+
+/// A percentile bootstrap 95 % interval of `statistic` over `values` (B resamples drawn from the
+/// counter-based stream named `stream`, so it is reproducible).
+struct Interval {
+  double low, high;
+};
+Interval Bootstrap95(const std::vector<double>& values, const std::function<double(std::vector<double>&)>& statistic,
+                     std::uint64_t seed, const std::string& stream, int resamples = 400);
 
 /// ensemble.json text: counts by status, statistics per output, exceedance probabilities.
 std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& records);
