@@ -15,6 +15,7 @@
 
 #include "dymesh/core/scenario.h"
 #include "dymesh/ensemble/design.h"
+#include "dymesh/ensemble/ensemble_report.h"
 #include "dymesh/ensemble/random_stream.h"
 #include "dymesh/ensemble/sample_run.h"
 #include "dymesh/ensemble/statistics.h"
@@ -29,6 +30,7 @@ namespace fs = std::filesystem;
 constexpr const char* kSamplesName = "samples.jsonl";
 constexpr const char* kStatisticsName = "ensemble.json";
 constexpr const char* kJournalName = "samples.journal.jsonl";
+constexpr const char* kReportName = "report.html";
 
 // the valid records of `file` (a missing file has none); a record of another spec is refused
 void ReadRecords(const Spec& spec, const fs::path& file, std::map<int, SampleRecord>* records) {
@@ -79,6 +81,7 @@ void WriteResults(const Spec& spec, const std::map<int, SampleRecord>& records, 
   }
   WriteFileAtomically((dir / kSamplesName).string(), lines);
   WriteFileAtomically((dir / kStatisticsName).string(), EnsembleJson(spec, ordered));
+  WriteFileAtomically((dir / kReportName).string(), EnsembleReportHtml(spec, ordered));
 }
 
 }  // namespace
@@ -92,7 +95,7 @@ Spec WithSamples(Spec spec, int samples) {
 
 RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
   const fs::path dir(options.out_dir);
-  OutputFolder folder(options.out_dir, {kSamplesName, kStatisticsName, kJournalName});
+  OutputFolder folder(options.out_dir, {kSamplesName, kStatisticsName, kJournalName, kReportName});
   // what the folder already holds (a finished run, or the journal of a stopped one)
   std::map<int, SampleRecord> records;
   ReadRecords(spec, dir / kSamplesName, &records);
@@ -151,7 +154,7 @@ void MergeShards(const Spec& spec, const std::vector<std::string>& shard_dirs, c
   for (int i = 0; i < spec.samples; ++i)
     if (!records.count(i))
       throw InputError(out_dir, kSamplesName, "sample " + std::to_string(i) + " is in no shard: run it, then merge again");
-  OutputFolder folder(out_dir, {kSamplesName, kStatisticsName});
+  OutputFolder folder(out_dir, {kSamplesName, kStatisticsName, kReportName});
   WriteResults(spec, records, fs::path(out_dir));
 }
 

@@ -140,9 +140,10 @@ std::string SeriesMarkup(const PlotSeries& series, const Frame& f, const std::st
     if (series.points)
       dots += "<circle cx=\"" + Px(f.Px(x[i])) + "\" cy=\"" + Px(f.Py(y[i])) + "\" r=\"3\" fill=\"" + series.colour + "\"/>";
   }
-  std::string s = "<polyline clip-path=\"url(#" + clip + ")\" fill=\"none\" stroke=\"" + series.colour +
-                  "\" stroke-width=\"1.8\" stroke-linejoin=\"round\"" +
-                  (series.dashed ? " stroke-dasharray=\"6 4\"" : "") + " points=\"" + points + "\"/>\n";
+  std::string s = !series.line ? std::string()
+                                : "<polyline clip-path=\"url(#" + clip + ")\" fill=\"none\" stroke=\"" + series.colour +
+                                      "\" stroke-width=\"1.8\" stroke-linejoin=\"round\"" +
+                                      (series.dashed ? " stroke-dasharray=\"6 4\"" : "") + " points=\"" + points + "\"/>\n";
   return s + dots + (dots.empty() ? "" : "\n");
 }
 

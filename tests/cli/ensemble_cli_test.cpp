@@ -11,6 +11,7 @@
 
 #include "../ensemble/box_spec.h"
 #include "process.h"
+#include "xml_check.h"
 
 namespace {
 
@@ -49,6 +50,15 @@ TEST_F(Ensemble, SameBytesAtOneAndTwoThreadsAndOrderedByIndex) {
   }
   EXPECT_EQ(ReadFile(dir_ / "1" / "samples.jsonl"), ReadFile(dir_ / "2" / "samples.jsonl"));
   EXPECT_EQ(ReadFile(dir_ / "1" / "ensemble.json"), ReadFile(dir_ / "2" / "ensemble.json"));
+  // the report: the same bytes too, well-formed XHTML, every figure present
+  const std::string html = ReadFile(dir_ / "1" / "report.html");
+  EXPECT_EQ(html, ReadFile(dir_ / "2" / "report.html"));
+  EXPECT_EQ(dymesh::testing::XmlWellFormedError(html), "");
+  for (const char* id : {"plot-histogram-box-delta-v", "plot-cdf-box-delta-v", "plot-convergence-box-delta-v",
+                         "plot-tornado-box-delta-v", "plot-scatter-speed-box-delta-v", "plot-dv-pdof-box",
+                         "table-statistics", "table-failed", "table-inputs"})
+    EXPECT_NE(html.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
+  for (const char* banned : {"<script", "src=", "href="}) EXPECT_EQ(html.find(banned), std::string::npos) << banned;
   for (int i = 0; i < 12; ++i) EXPECT_EQ(nlohmann::json::parse(Line(dir_ / "1" / "samples.jsonl", i))["index"], i);
   const nlohmann::json stats = nlohmann::json::parse(ReadFile(dir_ / "1" / "ensemble.json"));
   EXPECT_EQ(stats["status_counts"]["complete"], 12);

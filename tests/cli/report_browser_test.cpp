@@ -41,6 +41,26 @@ constexpr const char* kRenderCheck = R"(<script>
 })();
 </script>)";
 
+// the same for the ensemble report, whose scatter plots draw dots and whose tornado draws bars
+constexpr const char* kEnsembleRenderCheck = R"(<script>
+(function () {
+  var lines = [];
+  document.querySelectorAll('svg.plot').forEach(function (svg) {
+    var box = svg.getBoundingClientRect(), drawn = 0;
+    svg.querySelectorAll('polyline, polygon, circle, rect[height="16"]').forEach(function (e) {
+      var b = e.getBBox();
+      if (b.width > 0 || b.height > 0) drawn++;
+    });
+    lines.push(svg.id + ' ' + Math.round(box.width) + ' ' + Math.round(box.height) + ' ' + drawn);
+  });
+  var pre = document.createElement('pre');
+  pre.id = 'render-check';
+  pre.textContent = lines.join('\n');
+  document.body.appendChild(pre);
+  console.log('render-check done');
+})();
+</script>)";
+
 // a report made by the dymesh command, and Chromium to look at it
 class ReportInBrowser : public ::testing::Test {
  protected:
@@ -141,6 +161,40 @@ TEST_F(ReportInBrowser, EveryPlotRendersWithSizeAndShapes) {
       EXPECT_GT(plots[e][1], 150) << e;
       EXPECT_GT(plots[e][2], 0) << e << ": nothing drawn";
     }
+  }
+}
+
+TEST_F(ReportInBrowser, EnsembleReportRendersEveryPlot) {
+  // a small ensemble of the box into a wall: speed and restitution uncertain
+  fs::create_directories(dir_ / "ens");
+  std::ofstream(dir_ / "ens" / "spec.json") << R"({"scenario": ")" << DYMESH_DATA_DIR << R"(/scenarios/validation/box_barrier_30mph.json",
+    "samples": 12, "seed": 3, "inputs": [
+      {"name": "speed", "path": "bodies[0].initial.speed", "distribution": {"uniform": {"low": 25, "high": 35}}},
+      {"name": "restitution", "path": "bodies[0].restitution", "distribution": {"uniform": {"low": 0, "high": 0.2}}}]})";
+  const ProcessResult run = testing::RunProcess(
+      {DYMESH_CLI, "ensemble", (dir_ / "ens" / "spec.json").string(), "--quiet", "--out", (dir_ / "ens" / "out").string()},
+      dir_ / "dymesh");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::string html = testing::ReadFile(dir_ / "ens" / "out" / "report.html");
+  html.insert(html.rfind("</body>"), kEnsembleRenderCheck);
+  const fs::path page = dir_ / "ensemble.html";
+  std::ofstream(page) << html;
+  const ProcessResult r = Chromium(page, {"--dump-dom"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(ConsoleMessages(r.err), std::vector<std::string>{"render-check done"}) << r.err;
+  const std::size_t start = r.out.find("<pre id=\"render-check\">");
+  ASSERT_NE(start, std::string::npos);
+  std::stringstream lines(r.out.substr(start + 23, r.out.find("</pre>", start) - start - 23));
+  std::map<std::string, std::array<int, 3>> plots;
+  std::string id;
+  for (std::array<int, 3> v; lines >> id >> v[0] >> v[1] >> v[2];) plots[id] = v;
+  for (const char* e : {"plot-histogram-box-delta-v", "plot-cdf-box-delta-v", "plot-convergence-box-delta-v",
+                        "plot-tornado-box-delta-v", "plot-scatter-speed-box-delta-v", "plot-scatter-restitution-box-delta-v",
+                        "plot-dv-pdof-box", "plot-histogram-box-max-crush"}) {
+    ASSERT_TRUE(plots.count(e)) << e << " missing";
+    EXPECT_GT(plots[e][0], 300) << e;
+    EXPECT_GT(plots[e][1], 80) << e;
+    EXPECT_GT(plots[e][2], 0) << e << ": nothing drawn";
   }
 }
 

@@ -29,6 +29,7 @@ struct PlotSeries {
   std::string colour = "#1f77b4";  ///< CSS colour
   bool dashed = false;
   bool points = false;             ///< also draw a dot at every point
+  bool line = true;                ///< draw the line (false with points: a scatter plot)
 };
 
 /// A labelled point (e.g. the final delta-V).
