@@ -1,6 +1,7 @@
 // dymesh ensemble: runs a Monte Carlo spec into a folder (resumable, shardable), replays one
 // sample with the full single-run outputs, merges shards.
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 
@@ -18,6 +19,10 @@
 #include "dymesh/io/output_folder.h"
 #include "dymesh/report/output_files.h"
 #include "format.h"
+
+#ifdef DYMESH_WITH_MPI
+#include <mpi.h>
+#endif
 
 namespace dymesh::cli {
 namespace {
@@ -39,6 +44,27 @@ ensemble::Spec LoadRequestedSpec(const std::string& path, int samples) {
   return samples > 0 ? ensemble::WithSamples(spec, samples) : spec;
 }
 
+// under mpirun (and built with MPI) the ranks share the samples; otherwise one process
+ensemble::RunCounts RunOnRanks(const ensemble::Spec& spec, const ensemble::RunOptions& options) {
+#ifdef DYMESH_WITH_MPI
+  if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_SIZE") != nullptr) {
+    MPI_Init(nullptr, nullptr);
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    ensemble::RunCounts counts;
+    try {
+      counts = ensemble::RunEnsembleMpi(spec, options, rank, size);
+    } catch (...) {
+      MPI_Abort(MPI_COMM_WORLD, kExitFailure);
+    }
+    MPI_Finalize();
+    return counts;
+  }
+#endif
+  return ensemble::RunEnsemble(spec, options);
+}
+
 }  // namespace
 
 int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& interrupts, std::ostream& out,
@@ -53,7 +79,8 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
   options.progress = [&](int done, int total) {
     if (!request.quiet && (done % 10 == 0 || done == total)) err << Format("progress: %d / %d samples\n", done, total);
   };
-  const ensemble::RunCounts c = ensemble::RunEnsemble(spec, options);
+  const ensemble::RunCounts c = RunOnRanks(spec, options);
+  if (c.total == 0 && !c.finished) return kExitOk;  // an MPI worker rank: the master reports
   out << Format("%s: %d samples (shard %d/%d): %d run now, %d resumed, %d not complete (excluded from the statistics)\n",
                 request.spec_path.c_str(), c.total, options.shard, options.shards, c.ran, c.resumed, c.failed);
   if (!c.finished) {
@@ -61,7 +88,7 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
         << "/samples.journal.jsonl; run the same command again to resume\n";
     return kExitInterrupted;
   }
-  out << "outputs in " << request.out_dir << ": samples.jsonl, ensemble.json\n";
+  out << "outputs in " << request.out_dir << ": samples.jsonl, ensemble.json, report.html\n";
   return kExitOk;
 }
 
@@ -93,7 +120,7 @@ int EnsembleMergeCommand(const std::string& spec_path, int samples, const std::v
                          const std::string& out_dir, std::ostream& out) {
   const ensemble::Spec spec = LoadRequestedSpec(spec_path, samples);
   ensemble::MergeShards(spec, shards, out_dir);
-  out << shards.size() << " shards merged into " << out_dir << ": samples.jsonl, ensemble.json\n";
+  out << shards.size() << " shards merged into " << out_dir << ": samples.jsonl, ensemble.json, report.html\n";
   return kExitOk;
 }
 

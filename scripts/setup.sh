@@ -6,10 +6,10 @@ cd "$(dirname "$0")/.."
 # libcgal-dev: the outside peer of the locate benchmarks and `dymesh bench`;
 # chromium (and its driver): the report test renders report.html headless;
 # pybind11-dev, python3-dev, python3-numpy: the Python module; pkg-config: the install test;
-# librandom123-dev: the ensembles' counter-based streams
+# librandom123-dev: the ensembles' counter-based streams; libopenmpi-dev, openmpi-bin: ensembles on MPI
 packages=(build-essential cmake libeigen3-dev libembree-dev libtbb-dev libgtest-dev libbenchmark-dev
           nlohmann-json3-dev libcli11-dev libassimp-dev libcgal-dev chromium chromium-driver
-          pybind11-dev python3-dev python3-numpy pkg-config librandom123-dev)
+          pybind11-dev python3-dev python3-numpy pkg-config librandom123-dev libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 
@@ -21,6 +22,10 @@
 #include "dymesh/ensemble/statistics.h"
 #include "dymesh/io/atomic_file.h"
 #include "dymesh/io/output_folder.h"
+
+#ifdef DYMESH_WITH_MPI
+#include <mpi.h>
+#endif
 
 namespace dymesh::ensemble {
 namespace {
@@ -93,54 +98,150 @@ Spec WithSamples(Spec spec, int samples) {
   return spec;
 }
 
-RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
-  const fs::path dir(options.out_dir);
-  OutputFolder folder(options.out_dir, {kSamplesName, kStatisticsName, kJournalName, kReportName});
-  // what the folder already holds (a finished run, or the journal of a stopped one)
-  std::map<int, SampleRecord> records;
-  ReadRecords(spec, dir / kSamplesName, &records);
-  ReadRecords(spec, dir / kJournalName, &records);
-  std::vector<int> todo;
-  RunCounts counts;
-  for (int i = options.shard - 1; i < spec.samples; i += options.shards) {
-    ++counts.total;
-    if (records.count(i)) ++counts.resumed;
-    else todo.push_back(i);
+namespace {
+
+// the folder's side of a run: the lock, what is recorded already, the journal, and the results
+class Collector {
+ public:
+  Collector(const Spec& spec, const RunOptions& options)
+      : spec_(spec), options_(options), dir_(options.out_dir),
+        folder_(options.out_dir, {kSamplesName, kStatisticsName, kJournalName, kReportName}) {
+    // what the folder already holds (a finished run, or the journal of a stopped one)
+    ReadRecords(spec, dir_ / kSamplesName, &records_);
+    ReadRecords(spec, dir_ / kJournalName, &records_);
+    for (int i = options.shard - 1; i < spec.samples; i += options.shards) {
+      ++counts_.total;
+      if (records_.count(i)) ++counts_.resumed;
+      else todo_.push_back(i);
+    }
+    journal_ = std::make_unique<Journal>(dir_ / kJournalName);
   }
+
+  const std::vector<int>& todo() const { return todo_; }
+
+  // a finished sample: journaled, then kept as read back (the same numbers after a resume)
+  void Add(const std::string& line) {
+    journal_->Append(line);
+    SampleRecord stored;
+    ParseRecord(spec_, line, &stored);
+    std::lock_guard<std::mutex> lock(mutex_);
+    records_.emplace(stored.index, stored);
+    if (options_.progress) options_.progress(counts_.resumed + ++added_, counts_.total);
+  }
+
+  // counts, and the results once the shard is whole
+  RunCounts Finish() {
+    std::map<int, SampleRecord> mine;
+    for (const auto& [index, r] : records_)
+      if (index % options_.shards == options_.shard - 1) mine.emplace(index, r);
+    counts_.ran = static_cast<int>(mine.size()) - counts_.resumed;
+    for (const auto& [index, r] : mine) counts_.failed += r.status != "complete";
+    counts_.finished = static_cast<int>(mine.size()) == counts_.total;
+    if (counts_.finished) {
+      WriteResults(spec_, mine, dir_);
+      journal_.reset();
+      fs::remove(dir_ / kJournalName);
+    }
+    return counts_;
+  }
+
+ private:
+  const Spec& spec_;
+  const RunOptions& options_;
+  fs::path dir_;
+  OutputFolder folder_;
+  std::map<int, SampleRecord> records_;
+  std::vector<int> todo_;
+  RunCounts counts_;
+  std::unique_ptr<Journal> journal_;
+  std::mutex mutex_;
+  int added_ = 0;
+};
+
+}  // namespace
+
+RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
+  Collector collector(spec, options);
   // the missing samples, on oneTBB; each record journaled as it completes
   const DesignTable design(spec);
   MeshCache meshes;
-  Journal journal(dir / kJournalName);
-  std::mutex records_mutex;
-  std::atomic<int> done{counts.resumed};
+  const std::vector<int>& todo = collector.todo();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       if (options.stop && options.stop()) return;
-      SampleRecord r = RunSample(spec, todo[k], design.Values(todo[k]), &meshes);
-      journal.Append(r.line);
-      // the statistics read the record back as written (the same numbers after a resume)
-      SampleRecord stored;
-      ParseRecord(spec, r.line, &stored);
-      {
-        std::lock_guard<std::mutex> lock(records_mutex);
-        records.emplace(stored.index, stored);
-      }
-      if (options.progress) options.progress(++done, counts.total);
+      collector.Add(RunSample(spec, todo[k], design.Values(todo[k]), &meshes).line);
     }
   });
-  // counts, and the results once the shard is whole
-  std::map<int, SampleRecord> mine;
-  for (const auto& [index, r] : records)
-    if (index % options.shards == options.shard - 1) mine.emplace(index, r);
-  counts.ran = static_cast<int>(mine.size()) - counts.resumed;
-  for (const auto& [index, r] : mine) counts.failed += r.status != "complete";
-  counts.finished = static_cast<int>(mine.size()) == counts.total;
-  if (counts.finished) {
-    WriteResults(spec, mine, dir);
-    fs::remove(dir / kJournalName);
-  }
-  return counts;
+  return collector.Finish();
 }
+
+#ifdef DYMESH_WITH_MPI
+namespace {
+
+constexpr int kTagRequest = 1, kTagChunk = 2, kTagRecord = 3;
+constexpr int kChunk = 2;  // samples handed out at a time
+
+// a worker: asks for chunks, runs them, returns each record, until an empty chunk
+void MpiWorker(const Spec& spec) {
+  const DesignTable design(spec);
+  MeshCache meshes;
+  for (;;) {
+    MPI_Send(nullptr, 0, MPI_INT, 0, kTagRequest, MPI_COMM_WORLD);
+    int chunk[kChunk];
+    MPI_Status status;
+    MPI_Recv(chunk, kChunk, MPI_INT, 0, kTagChunk, MPI_COMM_WORLD, &status);
+    int n = 0;
+    MPI_Get_count(&status, MPI_INT, &n);
+    if (n == 0) return;
+    for (int k = 0; k < n; ++k) {
+      const std::string line = RunSample(spec, chunk[k], design.Values(chunk[k]), &meshes).line;
+      MPI_Send(line.data(), static_cast<int>(line.size()), MPI_CHAR, 0, kTagRecord, MPI_COMM_WORLD);
+    }
+  }
+}
+
+// the master: hands out chunks on request (a dynamic queue), collects the records, stops the workers
+RunCounts MpiMaster(const Spec& spec, const RunOptions& options, int size) {
+  Collector collector(spec, options);
+  const std::vector<int>& todo = collector.todo();
+  std::size_t next = 0;
+  int outstanding = 0, stopped = 0;
+  while (stopped < size - 1) {
+    MPI_Status status;
+    MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+    if (status.MPI_TAG == kTagRecord) {
+      int length = 0;
+      MPI_Get_count(&status, MPI_CHAR, &length);
+      std::string line(length, '\0');
+      MPI_Recv(line.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagRecord, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      collector.Add(line);
+      --outstanding;
+      continue;
+    }
+    MPI_Recv(nullptr, 0, MPI_INT, status.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    // the next chunk, or none once the queue is empty (or a stop was asked)
+    int chunk[kChunk];
+    int n = 0;
+    const bool stop = options.stop && options.stop();
+    while (!stop && n < kChunk && next < todo.size()) chunk[n++] = todo[next++];
+    outstanding += n;
+    MPI_Send(chunk, n, MPI_INT, status.MPI_SOURCE, kTagChunk, MPI_COMM_WORLD);
+    if (n == 0) ++stopped;
+  }
+  return collector.Finish();
+}
+
+}  // namespace
+
+RunCounts RunEnsembleMpi(const Spec& spec, const RunOptions& options, int rank, int size) {
+  if (size <= 1) return RunEnsemble(spec, options);
+  if (rank != 0) {
+    MpiWorker(spec);
+    return RunCounts{};
+  }
+  return MpiMaster(spec, options, size);
+}
+#endif
 
 void MergeShards(const Spec& spec, const std::vector<std::string>& shard_dirs, const std::string& out_dir) {
   std::map<int, SampleRecord> records;

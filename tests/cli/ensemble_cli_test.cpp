@@ -87,6 +87,25 @@ TEST_F(Ensemble, ThreeShardsMergedEqualOneRun) {
   EXPECT_NE(missing.err.find("sample 2 is in no shard"), std::string::npos) << missing.err;
 }
 
+#ifdef DYMESH_MPIEXEC
+TEST_F(Ensemble, OneTwoAndThreeMpiRanksGiveTheSameBytes) {
+  // OpenMPI refuses root unless told; CI runs as root
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 11);
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "plain").string()}).exit_code, 0);
+  for (const char* ranks : {"1", "2", "3"}) {
+    const fs::path out = dir_ / (std::string("ranks") + ranks);
+    const ProcessResult r = dymesh::testing::RunProcess(
+        {DYMESH_MPIEXEC, "--oversubscribe", "-np", ranks, DYMESH_CLI, "ensemble", spec, "--quiet", "--out", out.string()},
+        dir_ / "process", 300.0);
+    ASSERT_EQ(r.exit_code, 0) << ranks << " ranks\n" << r.err;
+    for (const char* name : {"samples.jsonl", "ensemble.json", "report.html"})
+      EXPECT_EQ(ReadFile(out / name), ReadFile(dir_ / "plain" / name)) << ranks << " ranks: " << name;
+  }
+}
+#endif
+
 TEST_F(Ensemble, KilledRunResumesToTheSameBytes) {
   const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 40);
   ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "whole").string()}).exit_code, 0);

@@ -1,6 +1,7 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "dymesh/ensemble/spec.h"
 
@@ -28,6 +29,12 @@ struct RunCounts {
 /// samples.jsonl (ordered by index) and ensemble.json, and removes the journal. The folder is locked
 /// for the run; one holding another spec's samples is refused.
 RunCounts RunEnsemble(const Spec& spec, const RunOptions& options);
+
+/// The same under MPI (built when MPI is found; call between MPI_Init and MPI_Finalize): rank 0
+/// keeps the folder and hands out chunks of sample indices to the other ranks on request (a dynamic
+/// queue), collecting their records over MPI (no shared file system needed); one rank runs as
+/// RunEnsemble. Outputs are byte-identical for any rank count. Returns the counts on rank 0.
+RunCounts RunEnsembleMpi(const Spec& spec, const RunOptions& options, int rank, int size);
 
 /// The spec with another sample count (its hash changes with it).
 Spec WithSamples(Spec spec, int samples);
