@@ -24,8 +24,17 @@ DesignTable::DesignTable(const Spec& spec) : spec_(spec) {
 std::vector<double> DesignTable::Values(int sample) const {
   // each input's uniform number; Latin hypercube places it inside the sample's stratum
   std::vector<double> u;
+  const int group = static_cast<int>(spec_.inputs.size()) + 2;
   for (std::size_t k = 0; k < spec_.inputs.size(); ++k) {
-    u.push_back(Uniform(spec_.seed, TextHash(spec_.inputs[k].name), sample, 0));
+    const std::uint64_t stream = TextHash(spec_.inputs[k].name);
+    if (spec_.design == Design::kSaltelli) {
+      // row j of A (draw 0) or of B (draw 2); AB_i takes input i from B
+      const int j = sample / group, m = sample % group;
+      const bool from_b = m == 1 || m == 2 + static_cast<int>(k);
+      u.push_back(Uniform(spec_.seed, stream, j, from_b ? 2 : 0));
+      continue;
+    }
+    u.push_back(Uniform(spec_.seed, stream, sample, 0));
     if (spec_.design == Design::kLatinHypercube) u[k] = (strata_[k][sample] + u[k]) / spec_.samples;
   }
   // Gaussian copula: the correlated inputs' normal scores mixed by the Cholesky factor

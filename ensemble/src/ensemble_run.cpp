@@ -92,6 +92,12 @@ void WriteResults(const Spec& spec, const std::map<int, SampleRecord>& records, 
 }  // namespace
 
 Spec WithSamples(Spec spec, int samples) {
+  // Saltelli counts rows of A and B
+  if (spec.design == Design::kSaltelli) {
+    if (samples == spec.base_samples) return spec;
+    spec.base_samples = samples;
+    samples *= static_cast<int>(spec.inputs.size()) + 2;
+  }
   if (samples == spec.samples) return spec;
   spec.samples = samples;
   spec.hash = TextHash(HashText(spec.hash) + " samples " + std::to_string(samples));

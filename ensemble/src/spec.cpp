@@ -269,7 +269,8 @@ Spec LoadSpec(const std::string& path) {
     const std::string d = j["design"].is_string() ? j["design"].get<std::string>() : "";
     if (d == "monte_carlo") spec.design = Design::kMonteCarlo;
     else if (d == "latin_hypercube") spec.design = Design::kLatinHypercube;
-    else r.Fail("design", "expected \"monte_carlo\" or \"latin_hypercube\", got " + j["design"].dump());
+    else if (d == "saltelli") spec.design = Design::kSaltelli;
+    else r.Fail("design", "expected \"monte_carlo\", \"latin_hypercube\" or \"saltelli\", got " + j["design"].dump());
   }
   if (j.contains("samples")) {
     const double n = r.Number(j["samples"], "samples");
@@ -289,6 +290,13 @@ Spec LoadSpec(const std::string& path) {
       if (!output.is_string()) r.Fail(at + ".output", "expected an output name such as \"p406.delta_v\"");
       spec.thresholds.push_back({output.get<std::string>(), r.Number(r.Require(t, at, "above"), at + ".above")});
     }
+  // Saltelli: `samples` counts the rows of A and B; each row runs inputs + 2 times
+  if (spec.design == Design::kSaltelli) {
+    if (!spec.correlation.inputs.empty()) r.Fail("correlation", "Sobol' indices (design \"saltelli\") need independent inputs");
+    if (spec.inputs.empty()) r.Fail("inputs", "Sobol' indices need at least one input");
+    spec.base_samples = spec.samples;
+    spec.samples = spec.base_samples * (static_cast<int>(spec.inputs.size()) + 2);
+  }
   // the hash covers what the samples depend on: the spec itself and the base scenario's text
   spec.hash = TextHash(j.dump() + "\n" + spec.scenario_text);
   return spec;

@@ -145,6 +145,18 @@ TEST_F(Ensemble, ReplayGivesTheRecordAndTheFullOutputs) {
   EXPECT_NE(bad.err.find("--index: expected a sample index in 0..7, got 8"), std::string::npos) << bad.err;
 }
 
+TEST_F(Ensemble, SaltelliDesignGivesSobolIndices) {
+  // 16 rows of A and B, two inputs: 64 runs; delta-V of the box is mostly speed, some restitution
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 16, "saltelli");
+  const ProcessResult r = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("64 samples"), std::string::npos) << r.out;
+  const nlohmann::json sobol = nlohmann::json::parse(ReadFile(dir_ / "out" / "ensemble.json"))["outputs"]["box.delta_v"]["sobol"];
+  EXPECT_EQ(sobol["speed"]["rows"], 16);
+  EXPECT_GT(sobol["speed"]["total"].get<double>(), sobol["restitution"]["total"].get<double>());
+  EXPECT_GT(sobol["speed"]["first"].get<double>(), 0.5);
+}
+
 TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
   struct Case {
     std::string extra, message;

@@ -169,6 +169,33 @@ TEST(Statistics, BootstrapIntervalOfTheMeanHasTheNormalWidth) {
   EXPECT_NEAR(ci.high - ci.low, width, 0.25 * width);  // 400 resamples: the width is known to ~10 %
 }
 
+// Saltelli's estimators on a closed-form model of two independent uniform inputs
+SobolIndices SobolOf(const std::function<double(double, double)>& f, int input, int n) {
+  std::vector<double> fa, fb, fab;
+  for (int j = 0; j < n; ++j) {
+    const double a0 = Uniform(21, 1, j, 0), a1 = Uniform(21, 2, j, 0);  // row j of A
+    const double b0 = Uniform(21, 1, j, 2), b1 = Uniform(21, 2, j, 2);  // row j of B
+    fa.push_back(f(a0, a1));
+    fb.push_back(f(b0, b1));
+    fab.push_back(input == 0 ? f(b0, a1) : f(a0, b1));
+  }
+  return SobolFromSaltelli(fa, fb, fab);
+}
+
+TEST(Statistics, SobolIndicesOfClosedFormModels) {
+  // additive y = 2a + b: V = 4/12 + 1/12, S_a = ST_a = 0.8, S_b = ST_b = 0.2
+  const auto additive = [](double a, double b) { return 2 * a + b; };
+  // product y = a b: V = 1/9 - 1/16 = 7/144, V_a = V_b = 1/48: S = 3/7, ST = 1 - 3/7 = 4/7
+  const auto product = [](double a, double b) { return a * b; };
+  const int n = 20000;  // estimator standard errors ~0.01 at this n: 0.03 is 3 of them
+  EXPECT_NEAR(SobolOf(additive, 0, n).first, 0.8, 0.03);
+  EXPECT_NEAR(SobolOf(additive, 0, n).total, 0.8, 0.03);
+  EXPECT_NEAR(SobolOf(additive, 1, n).first, 0.2, 0.03);
+  EXPECT_NEAR(SobolOf(additive, 1, n).total, 0.2, 0.03);
+  EXPECT_NEAR(SobolOf(product, 0, n).first, 3.0 / 7.0, 0.03);
+  EXPECT_NEAR(SobolOf(product, 0, n).total, 4.0 / 7.0, 0.03);
+}
+
 TEST(Crash3, CoefficientsFromB0AndB1) {
   // US: A = (W / g) (17.6 b0) (17.6 b1) / L, B = (W / g) (17.6 b1)^2 / L, g = 386.0886 in/s^2
   Crash3Preset p;

@@ -12,7 +12,10 @@
 /// base scenario's units.
 namespace dymesh::ensemble {
 
-enum class Design { kMonteCarlo, kLatinHypercube };
+/// kSaltelli: Sobol' indices by Saltelli's design: `base_samples` rows of two independent matrices
+/// A and B and, per input i, A with column i from B; run k in group j = k / (n + 2): 0 is A, 1 is B,
+/// 2 + i is AB_i.
+enum class Design { kMonteCarlo, kLatinHypercube, kSaltelli };
 
 struct Input {
   std::string name;
@@ -52,7 +55,8 @@ struct Spec {
   std::string scenario_text;   ///< its JSON text as read
   std::vector<Input> inputs;
   Design design = Design::kLatinHypercube;
-  int samples = 100;
+  int samples = 100;            ///< runs (Saltelli: base_samples * (inputs + 2))
+  int base_samples = 0;         ///< Saltelli: rows of A and B
   std::uint64_t seed = 1;
   std::vector<Threshold> thresholds;
   std::vector<Crash3Preset> crash3;

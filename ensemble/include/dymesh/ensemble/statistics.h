@@ -38,6 +38,14 @@ struct Interval {
 Interval Bootstrap95(const std::vector<double>& values, const std::function<double(std::vector<double>&)>& statistic,
                      std::uint64_t seed, const std::string& stream, int resamples = 400);
 
+/// Sobol' first-order and total indices of one input from Saltelli's runs: f(A_j), f(B_j), f(AB_i,j)
+/// for the rows j where all three are known (Saltelli 2010 first order with f(B) centred, Jansen
+/// total), over the variance of f(A) and f(B) together.
+struct SobolIndices {
+  double first = 0.0, total = 0.0;
+};
+SobolIndices SobolFromSaltelli(const std::vector<double>& fa, const std::vector<double>& fb, const std::vector<double>& fab);
+
 /// ensemble.json text: counts by status, statistics per output, exceedance probabilities.
 std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& records);
 
