@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "contact_setup.h"
+#include "dymesh/core/scenario.h"
 #include "locate_rates.h"
 #include "step_timing.h"
 
@@ -32,6 +33,9 @@ double Rate(size_t segments, const std::function<void()>& locate) {
 }  // namespace
 
 int RunBench(const BenchRequest& request) {
+  if (!request.ensemble.empty()) return RunEnsembleBench(request);
+  if (request.master.empty() || request.slave.empty())
+    throw InputError("bench", "--master/--slave", "give both mesh files, or --ensemble SPEC");
   // the two meshes in contact, and one pass's Location segments
   const bench::ContactSetup setup =
       bench::PlaceInContact(bench::LoadUserMesh(request.master, request.axes),

@@ -11,7 +11,13 @@ struct BenchRequest {
   std::array<std::string, 3> axes{"x", "y", "z"};  ///< body x, y, z from these signed mesh axes
   int threads = 2;            ///< worker threads for the step timing
   bool json = false;          ///< print JSON instead of a table
+  std::string ensemble;       ///< an ensemble spec: time its samples instead (RunEnsembleBench)
+  int samples = 8;            ///< ensemble samples timed per thread setting
 };
+
+/// Times an ensemble spec's samples at 1 and N threads (meshes loaded once, untimed) and reports
+/// samples per second, seconds per 1000 samples and the memory a concurrent sample holds.
+int RunEnsembleBench(const BenchRequest& request);
 
 /// Places the slave's +x end 0.1 m into the master's -y side and prints locate rates (engine,
 /// raw Embree, neighbour box, CGAL), step time at 1 and N threads, and memory per triangle.

@@ -100,7 +100,7 @@ int EnsembleReplayCommand(const std::string& spec_path, int samples, int index, 
                                                ", got " + std::to_string(index));
   const std::vector<double> values = ensemble::DesignTable(spec).Values(index);
   // the record, as the ensemble wrote it, and the full single-run outputs of the same run
-  ensemble::MeshCache meshes;
+  ensemble::SharedAssets meshes;
   const ensemble::SampleRecord record = ensemble::RunSample(spec, index, values, &meshes);
   const Scenario scenario = ensemble::SampleScenario(spec, values);
   std::vector<std::string> names = OutputFileNames(scenario);

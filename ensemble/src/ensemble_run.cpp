@@ -170,7 +170,7 @@ RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
   Collector collector(spec, options);
   // the missing samples, on oneTBB; each record journaled as it completes
   const DesignTable design(spec);
-  MeshCache meshes;
+  SharedAssets meshes;
   const std::vector<int>& todo = collector.todo();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
@@ -190,7 +190,7 @@ constexpr int kChunk = 2;  // samples handed out at a time
 // a worker: asks for chunks, runs them, returns each record, until an empty chunk
 void MpiWorker(const Spec& spec) {
   const DesignTable design(spec);
-  MeshCache meshes;
+  SharedAssets meshes;
   for (;;) {
     MPI_Send(nullptr, 0, MPI_INT, 0, kTagRequest, MPI_COMM_WORLD);
     int chunk[kChunk];

@@ -48,7 +48,9 @@ Json RecordHead(const Spec& spec, int index, const std::vector<double>& values) 
 
 }  // namespace
 
-TriMesh MeshCache::Get(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
+SharedAssets::SharedAssets() : device_(std::make_shared<const EmbreeDevice>()) {}
+
+TriMesh SharedAssets::Get(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
   // the key: everything BuildBodyMesh reads
   const std::string key = source.file + "|" + std::to_string(source.scale) + "|" + source.axes[0] + source.axes[1] +
                           source.axes[2] + "|" + std::to_string(source.fit_length.value_or(0)) + "|" +
@@ -92,7 +94,7 @@ Scenario SampleScenario(const Spec& spec, const std::vector<double>& values) {
   return ParseScenario(j.dump(), spec.scenario_file);
 }
 
-SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, MeshCache* meshes) {
+SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes) {
   SampleRecord r;
   r.index = index;
   Json record = RecordHead(spec, index, values);
@@ -101,7 +103,7 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
     const auto models = BuildBodyModels(scenario, [&](const MeshSource& source, const std::string& field) {
       return meshes->Get(source, scenario.file, field);
     });
-    Simulation sim(scenario, models, MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+    Simulation sim(scenario, models, MakeEmbreeLocatorFactory(meshes->device()));
     sim.Run();
     const Summary s = Summarize(sim);
     const OutputUnits u = UnitsOf(scenario.units);

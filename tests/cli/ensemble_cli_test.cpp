@@ -157,6 +157,20 @@ TEST_F(Ensemble, SaltelliDesignGivesSobolIndices) {
   EXPECT_GT(sobol["speed"]["first"].get<double>(), 0.5);
 }
 
+TEST_F(Ensemble, BenchReportsSamplesPerSecondAndMemory) {
+  // figures present and positive (speeds are measured in the benchmarks, not asserted here)
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 8);
+  const ProcessResult r = Dymesh({"bench", "--ensemble", spec, "--samples", "2", "--threads", "2", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["samples_per_second"]["threads_1"].get<double>(), 0.0);
+  EXPECT_GT(j["samples_per_second"]["threads_n"].get<double>(), 0.0);
+  EXPECT_GT(j["bytes_per_concurrent_sample"].get<double>(), 10000.0);
+  const ProcessResult neither = Dymesh({"bench"});
+  EXPECT_EQ(neither.exit_code, 2);
+  EXPECT_NE(neither.err.find("give both mesh files, or --ensemble SPEC"), std::string::npos) << neither.err;
+}
+
 TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
   struct Case {
     std::string extra, message;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "dymesh/accel/embree_locator.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/ensemble/spec.h"
 
@@ -12,12 +13,16 @@
 /// run and its record (one line of samples.jsonl).
 namespace dymesh::ensemble {
 
-/// Meshes built once per mesh source and shared read-only by every sample (thread-safe).
-class MeshCache {
+/// What every sample shares read-only (thread-safe): meshes built once per mesh source, and one
+/// Embree device (each sample still builds its own scenes on it).
+class SharedAssets {
  public:
+  SharedAssets();
   TriMesh Get(const MeshSource& source, const std::string& scenario_file, const std::string& field);
+  const std::shared_ptr<const EmbreeDevice>& device() const { return device_; }
 
  private:
+  std::shared_ptr<const EmbreeDevice> device_;
   std::mutex mutex_;
   std::map<std::string, std::shared_ptr<const TriMesh>> meshes_;
 };
@@ -43,7 +48,7 @@ Scenario SampleScenario(const Spec& spec, const std::vector<double>& values);
 
 /// Runs sample `index` with `values` and makes its record; never throws for a bad sample (the
 /// record says why). `engine_version` is written into the record.
-SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, MeshCache* meshes);
+SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes);
 
 /// Reads a record line back (status, outputs); false when it is not a valid record of `spec`.
 bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out);
