@@ -22,6 +22,8 @@ DesignTable::DesignTable(const Spec& spec) : spec_(spec) {
 }
 
 std::vector<double> DesignTable::Values(int sample) const {
+  if (spec_.design == Design::kTable) return spec_.table[sample];
+  if (spec_.design == Design::kGrid || spec_.design == Design::kOneAtATime) return Deterministic(sample);
   // each input's uniform number; Latin hypercube places it inside the sample's stratum
   std::vector<double> u;
   const int group = static_cast<int>(spec_.inputs.size()) + 2;
@@ -47,6 +49,24 @@ std::vector<double> DesignTable::Values(int sample) const {
   }
   std::vector<double> values;
   for (std::size_t k = 0; k < spec_.inputs.size(); ++k) values.push_back(Quantile(spec_.inputs[k].distribution, u[k]));
+  return values;
+}
+
+std::vector<double> DesignTable::Deterministic(int sample) const {
+  std::vector<double> values;
+  int rest = sample;
+  for (std::size_t k = 0; k < spec_.inputs.size(); ++k) {
+    const Input& in = spec_.inputs[k];
+    double u = 0.5;
+    if (spec_.design == Design::kGrid) {
+      // mixed radix, the first input fastest: level l sits at the probability (l + 1/2) / levels
+      u = (rest % in.levels + 0.5) / in.levels;
+      rest /= in.levels;
+    } else if (sample > 0 && static_cast<int>(k) == (sample - 1) / 2) {
+      u = (sample - 1) % 2 == 0 ? 0.05 : 0.95;
+    }
+    values.push_back(Quantile(in.distribution, u));
+  }
   return values;
 }
 

@@ -142,6 +142,11 @@ Input ParseInput(const Reader& r, const Json& j, const Json& scenario, const std
   if (!scenario.contains(pointer.parent_pointer()))
     r.Fail(field + ".path", "\"" + in.path + "\" does not lead into the scenario (its parent is missing)");
   in.distribution = ParseDistribution(r, r.Require(j, field, "distribution"), field + ".distribution");
+  if (j.contains("levels")) {
+    const double levels = r.Number(j["levels"], field + ".levels");
+    if (levels < 1 || levels > 1000 || std::floor(levels) != levels) r.Fail(field + ".levels", "expected an integer in 1..1000");
+    in.levels = static_cast<int>(levels);
+  }
   if (j.contains("bounds")) {
     const Json& b = j["bounds"];
     if (!b.is_array() || b.size() != 2) r.Fail(field + ".bounds", "expected [low, high]");
@@ -223,6 +228,35 @@ void ParseCorrelation(const Reader& r, const Json& j, Spec* spec) {
   spec->correlation.cholesky = llt.matrixL();
 }
 
+// grid, one-at-a-time and table designs: their sample count, and the table's rows
+void SizeDeterministicDesign(const Reader& r, const Json& j, Spec* spec) {
+  const std::size_t k = spec->inputs.size();
+  if (spec->design == Design::kGrid) {
+    double runs = 1;
+    for (const Input& in : spec->inputs) runs *= in.levels;
+    if (runs > 1e7) r.Fail("inputs", "the grid would have more than 1e7 runs");
+    spec->samples = static_cast<int>(runs);
+  } else if (spec->design == Design::kOneAtATime) {
+    spec->samples = static_cast<int>(1 + 2 * k);
+  } else if (spec->design == Design::kTable) {
+    const Json& table = r.Require(j, "", "table");
+    if (!table.is_array() || table.empty()) r.Fail("table", "expected an array of rows, one value per input");
+    for (std::size_t row = 0; row < table.size(); ++row) {
+      const std::string at = "table[" + std::to_string(row) + "]";
+      if (!table[row].is_array() || table[row].size() != k)
+        r.Fail(at, "expected " + std::to_string(k) + " values (one per input, in input order)");
+      std::vector<double> values;
+      for (std::size_t c = 0; c < k; ++c) values.push_back(r.Number(table[row][c], at + "[" + std::to_string(c) + "]"));
+      spec->table.push_back(values);
+    }
+    spec->samples = static_cast<int>(spec->table.size());
+  }
+  const bool deterministic =
+      spec->design == Design::kGrid || spec->design == Design::kOneAtATime || spec->design == Design::kTable;
+  if (deterministic && !spec->correlation.inputs.empty())
+    r.Fail("correlation", "a grid, one-at-a-time or table design has no random draws to correlate");
+}
+
 }  // namespace
 
 std::string HashText(std::uint64_t hash) {
@@ -244,8 +278,10 @@ Spec LoadSpec(const std::string& path) {
   if (!j.is_object()) r.Fail("(root)", "expected an object");
   for (const auto& item : j.items())
     if (item.key() != "scenario" && item.key() != "inputs" && item.key() != "design" && item.key() != "samples" &&
-        item.key() != "seed" && item.key() != "thresholds" && item.key() != "crash3" && item.key() != "correlation")
-      r.Fail(item.key(), "unknown key; allowed keys: scenario, inputs, crash3, correlation, design, samples, seed, thresholds");
+        item.key() != "seed" && item.key() != "thresholds" && item.key() != "crash3" && item.key() != "correlation" &&
+        item.key() != "table")
+      r.Fail(item.key(), "unknown key; allowed keys: scenario, inputs, crash3, correlation, design, samples, seed, "
+                         "thresholds, table");
   // the base scenario, relative to the spec
   const Json& scenario = r.Require(j, "", "scenario");
   if (!scenario.is_string()) r.Fail("scenario", "expected a scenario file name");
@@ -270,7 +306,11 @@ Spec LoadSpec(const std::string& path) {
     if (d == "monte_carlo") spec.design = Design::kMonteCarlo;
     else if (d == "latin_hypercube") spec.design = Design::kLatinHypercube;
     else if (d == "saltelli") spec.design = Design::kSaltelli;
-    else r.Fail("design", "expected \"monte_carlo\", \"latin_hypercube\" or \"saltelli\", got " + j["design"].dump());
+    else if (d == "grid") spec.design = Design::kGrid;
+    else if (d == "one_at_a_time") spec.design = Design::kOneAtATime;
+    else if (d == "table") spec.design = Design::kTable;
+    else r.Fail("design", "expected \"monte_carlo\", \"latin_hypercube\", \"saltelli\", \"grid\", \"one_at_a_time\" or "
+                          "\"table\", got " + j["design"].dump());
   }
   if (j.contains("samples")) {
     const double n = r.Number(j["samples"], "samples");
@@ -290,6 +330,8 @@ Spec LoadSpec(const std::string& path) {
       if (!output.is_string()) r.Fail(at + ".output", "expected an output name such as \"p406.delta_v\"");
       spec.thresholds.push_back({output.get<std::string>(), r.Number(r.Require(t, at, "above"), at + ".above")});
     }
+  // deterministic designs set their own sample count
+  SizeDeterministicDesign(r, j, &spec);
   // Saltelli: `samples` counts the rows of A and B; each row runs inputs + 2 times
   if (spec.design == Design::kSaltelli) {
     if (!spec.correlation.inputs.empty()) r.Fail("correlation", "Sobol' indices (design \"saltelli\") need independent inputs");

@@ -92,6 +92,22 @@ nlohmann::json SobolJson(const Spec& spec, const std::vector<SampleRecord>& reco
   return out;
 }
 
+// the one-at-a-time swings of one output: each input at its 5th and 95th percentile, the others at
+// their medians (runs that did not complete are left out)
+nlohmann::json OneAtATimeJson(const Spec& spec, const std::vector<SampleRecord>& records, const std::string& name) {
+  std::map<int, double> value;
+  for (const SampleRecord& r : records)
+    if (const auto it = r.outputs.find(name); it != r.outputs.end()) value[r.index] = it->second;
+  nlohmann::json out = nlohmann::json::object();
+  if (value.count(0)) out["baseline"] = value[0];
+  for (std::size_t i = 0; i < spec.inputs.size(); ++i) {
+    const int low = static_cast<int>(1 + 2 * i), high = low + 1;
+    if (!value.count(low) || !value.count(high)) continue;
+    out["inputs"][spec.inputs[i].name] = {{"at_p5", value[low]}, {"at_p95", value[high]}, {"swing", value[high] - value[low]}};
+  }
+  return out;
+}
+
 }  // namespace
 
 double Spearman(const std::vector<double>& x, const std::vector<double>& y) { return Pearson(Ranks(x), Ranks(y)); }
@@ -220,6 +236,7 @@ std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& reco
     }
     // Saltelli's design: Sobol' first-order and total indices per input, with bootstrap intervals
     if (spec.design == Design::kSaltelli) o["sobol"] = SobolJson(spec, records, name);
+    if (spec.design == Design::kOneAtATime) o["one_at_a_time"] = OneAtATimeJson(spec, records, name);
     // sensitivity: Spearman and partial rank correlation of every input with this output
     const std::vector<double> prcc = PartialRankCorrelation(x, v);
     for (std::size_t k = 0; k < spec.inputs.size() && !x.empty(); ++k) {

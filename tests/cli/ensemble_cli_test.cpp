@@ -157,6 +157,17 @@ TEST_F(Ensemble, SaltelliDesignGivesSobolIndices) {
   EXPECT_GT(sobol["speed"]["first"].get<double>(), 0.5);
 }
 
+TEST_F(Ensemble, OneAtATimeGivesTheSwings) {
+  // the box into a wall: delta-V ~ (1 + e) v, so speed 25.5..34.5 mph swings it ~9.9 mph and
+  // restitution 0.01..0.19 ~5.4 mph, around ~33 mph at the medians
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 1, "one_at_a_time");
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "out").string()}).exit_code, 0);
+  const nlohmann::json oat = nlohmann::json::parse(ReadFile(dir_ / "out" / "ensemble.json"))["outputs"]["box.delta_v"]["one_at_a_time"];
+  EXPECT_NEAR(oat["baseline"].get<double>(), 33.0, 0.05 * 33.0);
+  EXPECT_NEAR(oat["inputs"]["speed"]["swing"].get<double>(), 9.9, 0.1 * 9.9);
+  EXPECT_NEAR(oat["inputs"]["restitution"]["swing"].get<double>(), 5.4, 0.2 * 5.4);
+}
+
 TEST_F(Ensemble, BenchReportsSamplesPerSecondAndMemory) {
   // figures present and positive (speeds are measured in the benchmarks, not asserted here)
   const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 8);

@@ -100,6 +100,37 @@ TEST(Sampling, LatinHypercubeFillsEveryStratumOnce) {
   }
 }
 
+TEST(Designs, GridOneAtATimeAndTableGiveTheirRuns) {
+  const std::string dir = ::testing::TempDir() + "/designs";
+  // grid: 3 x 3 levels at probabilities 1/6, 1/2, 5/6, the first input fastest
+  const Spec grid = LoadSpec(testing::WriteBoxSpec(dir, 1, "grid"));
+  ASSERT_EQ(grid.samples, 9);
+  EXPECT_NEAR(DesignTable(grid).Values(0)[0], 25.0 + 10.0 / 6.0, 1e-12);
+  EXPECT_NEAR(DesignTable(grid).Values(1)[0], 30.0, 1e-12);
+  EXPECT_NEAR(DesignTable(grid).Values(7)[1], 0.2 * 5.0 / 6.0, 1e-12);  // 7 = 1 + 3 * 2: input 1 at its third level
+  EXPECT_NEAR(DesignTable(grid).Values(7)[0], 30.0, 1e-12);
+  // one at a time: the medians, then each input at P5 and P95
+  const Spec oat = LoadSpec(testing::WriteBoxSpec(dir, 1, "one_at_a_time"));
+  ASSERT_EQ(oat.samples, 5);
+  EXPECT_EQ(DesignTable(oat).Values(0), (std::vector<double>{30.0, 0.1}));
+  EXPECT_NEAR(DesignTable(oat).Values(1)[0], 25.5, 1e-12);
+  EXPECT_NEAR(DesignTable(oat).Values(2)[0], 34.5, 1e-12);
+  EXPECT_NEAR(DesignTable(oat).Values(3)[1], 0.01, 1e-12);
+  EXPECT_EQ(DesignTable(oat).Values(3)[0], 30.0);
+  // a table: the rows as given, refused when a row has the wrong length
+  std::string path = testing::WriteBoxSpec(dir, 1, "table");
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.insert(text.rfind('}'), R"(, "table": [[26, 0.05], [33, 0.15]])");
+  std::ofstream(path) << text;
+  const Spec table = LoadSpec(path);
+  ASSERT_EQ(table.samples, 2);
+  EXPECT_EQ(DesignTable(table).Values(1), (std::vector<double>{33.0, 0.15}));
+  text.replace(text.find("[33, 0.15]"), 10, "[33]");
+  std::ofstream(path) << text;
+  EXPECT_THROW(LoadSpec(path), InputError);
+}
+
 TEST(Sampling, AddingAnInputDoesNotShiftTheOthers) {
   const Spec two = LoadSpec(testing::WriteBoxSpec(::testing::TempDir() + "/two", 20, "monte_carlo"));
   const Spec three = LoadSpec(testing::WriteBoxSpec(

@@ -17,6 +17,7 @@ class DesignTable {
   std::vector<double> Values(int sample) const;
 
  private:
+  std::vector<double> Deterministic(int sample) const;  // grid and one-at-a-time
   const Spec& spec_;
   std::vector<std::vector<int>> strata_;  // Latin hypercube: stratum of each sample, per input
 };

@@ -15,7 +15,10 @@ namespace dymesh::ensemble {
 /// kSaltelli: Sobol' indices by Saltelli's design: `base_samples` rows of two independent matrices
 /// A and B and, per input i, A with column i from B; run k in group j = k / (n + 2): 0 is A, 1 is B,
 /// 2 + i is AB_i.
-enum class Design { kMonteCarlo, kLatinHypercube, kSaltelli };
+/// kGrid: every combination of each input's `levels` equal-probability quantiles (mixed radix, the
+/// first input fastest). kOneAtATime: run 0 at every input's median, then per input i run 1 + 2i at
+/// its 5th and 2 + 2i at its 95th percentile, the others at their medians. kTable: the spec's rows.
+enum class Design { kMonteCarlo, kLatinHypercube, kSaltelli, kGrid, kOneAtATime, kTable };
 
 struct Input {
   std::string name;
@@ -23,6 +26,7 @@ struct Input {
   std::string pointer;   ///< the same as a JSON pointer, /bodies/0/initial/speed; empty for a preset's input
   Distribution distribution;
   double low = -1e300, high = 1e300;  ///< hard physical bounds: a sample outside is refused
+  int levels = 3;                     ///< grid design: quantile levels of this input
 };
 
 /// P(output > above): the output is "BODY.QUANTITY" (e.g. "p406.delta_v").
@@ -57,6 +61,7 @@ struct Spec {
   Design design = Design::kLatinHypercube;
   int samples = 100;            ///< runs (Saltelli: base_samples * (inputs + 2))
   int base_samples = 0;         ///< Saltelli: rows of A and B
+  std::vector<std::vector<double>> table;  ///< table design: one row of input values per sample
   std::uint64_t seed = 1;
   std::vector<Threshold> thresholds;
   std::vector<Crash3Preset> crash3;
