@@ -135,6 +135,7 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
   out->status = j["status"].get<std::string>();
   out->line = line;
   out->outputs.clear();
+  out->observables.clear();
   out->inputs.clear();
   if (j.contains("inputs"))
     for (const Input& in : spec.inputs) out->inputs.push_back(j["inputs"].value(in.name, 0.0));
@@ -142,7 +143,12 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
     for (const Json& b : j["bodies"]) {
       const std::string name = b["name"].get<std::string>();
       for (const char* q : {"delta_v", "pdof_deg", "peak_acceleration_g", "max_crush", "crush_energy"})
-        out->outputs[name + "." + q] = b[q].get<double>();
+        out->outputs[name + "." + q] = out->observables[name + "." + q] = b[q].get<double>();
+      // what evidence may be measured on: the outputs, the crush profile and the rest position
+      for (int c = 0; c < 6; ++c) out->observables[name + ".c" + std::to_string(c + 1)] = b["c"][c].get<double>();
+      out->observables[name + ".rest_x"] = b["final_position"][0].get<double>();
+      out->observables[name + ".rest_y"] = b["final_position"][1].get<double>();
+      out->observables[name + ".rest_heading"] = b["final_heading_deg"].get<double>();
     }
   }
   return true;

@@ -279,9 +279,9 @@ Spec LoadSpec(const std::string& path) {
   for (const auto& item : j.items())
     if (item.key() != "scenario" && item.key() != "inputs" && item.key() != "design" && item.key() != "samples" &&
         item.key() != "seed" && item.key() != "thresholds" && item.key() != "crash3" && item.key() != "correlation" &&
-        item.key() != "table")
+        item.key() != "table" && item.key() != "evidence")
       r.Fail(item.key(), "unknown key; allowed keys: scenario, inputs, crash3, correlation, design, samples, seed, "
-                         "thresholds, table");
+                         "thresholds, table, evidence");
   // the base scenario, relative to the spec
   const Json& scenario = r.Require(j, "", "scenario");
   if (!scenario.is_string()) r.Fail("scenario", "expected a scenario file name");
@@ -330,6 +330,19 @@ Spec LoadSpec(const std::string& path) {
       if (!output.is_string()) r.Fail(at + ".output", "expected an output name such as \"p406.delta_v\"");
       spec.thresholds.push_back({output.get<std::string>(), r.Number(r.Require(t, at, "above"), at + ".above")});
     }
+  if (j.contains("evidence")) {
+    if (!j["evidence"].is_array()) r.Fail("evidence", "expected an array of measurements");
+    for (std::size_t i = 0; i < j["evidence"].size(); ++i) {
+      const std::string at = "evidence[" + std::to_string(i) + "]";
+      const Json& e = j["evidence"][i];
+      const Json& observable = r.Require(e, at, "observable");
+      if (!observable.is_string() || observable.get<std::string>().find('.') == std::string::npos)
+        r.Fail(at + ".observable", "expected BODY.QUANTITY, e.g. \"p406.delta_v\" or \"p406.c3\"");
+      const double sd = r.Number(r.Require(e, at, "sd"), at + ".sd");
+      if (!(sd > 0.0)) r.Fail(at + ".sd", "expected a standard deviation > 0");
+      spec.evidence.push_back({observable.get<std::string>(), r.Number(r.Require(e, at, "value"), at + ".value"), sd});
+    }
+  }
   // deterministic designs set their own sample count
   SizeDeterministicDesign(r, j, &spec);
   // Saltelli: `samples` counts the rows of A and B; each row runs inputs + 2 times

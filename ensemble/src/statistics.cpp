@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "dymesh/ensemble/random_stream.h"
@@ -108,6 +109,48 @@ nlohmann::json OneAtATimeJson(const Spec& spec, const std::vector<SampleRecord>&
   return out;
 }
 
+// the weighted mean, SD and 5/50/95 % quantiles of values with weights
+nlohmann::json WeightedSummary(std::vector<std::pair<double, double>> vw) {
+  std::sort(vw.begin(), vw.end());
+  double sum = 0.0, mean = 0.0;
+  for (const auto& [v, w] : vw) sum += w, mean += v * w;
+  if (!(sum > 0.0)) return nullptr;
+  mean /= sum;
+  double var = 0.0;
+  for (const auto& [v, w] : vw) var += w * (v - mean) * (v - mean);
+  nlohmann::json out = {{"mean", mean}, {"sd", std::sqrt(var / sum)}};
+  for (const auto& [key, q] : {std::pair{"p5", 0.05}, std::pair{"p50", 0.5}, std::pair{"p95", 0.95}}) {
+    double acc = 0.0;
+    for (const auto& [v, w] : vw)
+      if ((acc += w) >= q * sum) {
+        out[key] = v;
+        break;
+      }
+  }
+  return out;
+}
+
+// posterior statistics of every input and output, the samples weighed by the evidence
+nlohmann::json PosteriorJson(const Spec& spec, const std::vector<SampleRecord>& records) {
+  double effective = 0.0;
+  const std::vector<double> w = EvidenceWeights(spec, records, &effective);
+  nlohmann::json out;
+  out["effective_sample_size"] = effective;
+  for (const Evidence& e : spec.evidence) out["evidence"].push_back({{"observable", e.observable}, {"value", e.value}, {"sd", e.sd}});
+  for (std::size_t k = 0; k < spec.inputs.size(); ++k) {
+    std::vector<std::pair<double, double>> vw;
+    for (std::size_t i = 0; i < records.size(); ++i)
+      if (w[i] > 0.0 && k < records[i].inputs.size()) vw.push_back({records[i].inputs[k], w[i]});
+    out["inputs"][spec.inputs[k].name] = WeightedSummary(vw);
+  }
+  std::map<std::string, std::vector<std::pair<double, double>>> outputs;
+  for (std::size_t i = 0; i < records.size(); ++i)
+    if (w[i] > 0.0)
+      for (const auto& [name, v] : records[i].outputs) outputs[name].push_back({v, w[i]});
+  for (auto& [name, vw] : outputs) out["outputs"][name] = WeightedSummary(vw);
+  return out;
+}
+
 }  // namespace
 
 double Spearman(const std::vector<double>& x, const std::vector<double>& y) { return Pearson(Ranks(x), Ranks(y)); }
@@ -173,6 +216,39 @@ SobolIndices SobolFromSaltelli(const std::vector<double>& fa, const std::vector<
     total += (fa[j] - fab[j]) * (fa[j] - fab[j]);
   }
   return {first / n / variance, total / (2.0 * n) / variance};
+}
+
+std::vector<double> EvidenceWeights(const Spec& spec, const std::vector<SampleRecord>& records, double* effective) {
+  // log-likelihoods first (relative to the best sample: no underflow)
+  std::vector<double> log_w(records.size(), -std::numeric_limits<double>::infinity());
+  double best = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    if (records[i].status != "complete") continue;
+    double l = 0.0;
+    bool known = true;
+    for (const Evidence& e : spec.evidence) {
+      const auto it = records[i].observables.find(e.observable);
+      if (it == records[i].observables.end()) {
+        known = false;
+        break;
+      }
+      const double z = (it->second - e.value) / e.sd;
+      l -= 0.5 * z * z;
+    }
+    if (!known) continue;
+    log_w[i] = l;
+    best = std::max(best, l);
+  }
+  std::vector<double> w(records.size(), 0.0);
+  double sum = 0.0, squares = 0.0;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    if (!std::isfinite(log_w[i])) continue;
+    w[i] = std::exp(log_w[i] - best);
+    sum += w[i];
+    squares += w[i] * w[i];
+  }
+  *effective = squares > 0.0 ? sum * sum / squares : 0.0;
+  return w;
 }
 
 std::map<std::string, OutputStatistics> ComputeStatistics(const std::vector<SampleRecord>& records) {
@@ -256,6 +332,7 @@ std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& reco
     j["exceedance"].push_back({{"output", t.output}, {"above", t.above}, {"n", n},
                                {"probability", n > 0 ? static_cast<double>(above) / n : 0.0}});
   }
+  if (!spec.evidence.empty()) j["posterior"] = PosteriorJson(spec, records);
   return j.dump(2) + "\n";
 }
 

@@ -168,6 +168,21 @@ TEST_F(Ensemble, OneAtATimeGivesTheSwings) {
   EXPECT_NEAR(oat["inputs"]["restitution"]["swing"].get<double>(), 5.4, 0.2 * 5.4);
 }
 
+TEST_F(Ensemble, EvidenceGivesThePosteriorOfTheImpactSpeed) {
+  // the box's delta-V measured as 36.3 +- 0.5 mph: delta-V ~ (1 + e) v with e ~ 0.1 puts the
+  // posterior impact speed near 33 mph (prior uniform 25..35, mean 30)
+  std::string path = dymesh::testing::WriteBoxSpec(dir_, 60);
+  std::string text = ReadFile(path);
+  text.insert(text.rfind('}'), R"(, "evidence": [{"observable": "box.delta_v", "value": 36.3, "sd": 0.5}])");
+  std::ofstream(path) << text;
+  ASSERT_EQ(Dymesh({"ensemble", path, "--quiet", "--out", (dir_ / "out").string()}).exit_code, 0);
+  const nlohmann::json post = nlohmann::json::parse(ReadFile(dir_ / "out" / "ensemble.json"))["posterior"];
+  EXPECT_GT(post["effective_sample_size"].get<double>(), 3.0);
+  EXPECT_LT(post["effective_sample_size"].get<double>(), 60.0);
+  EXPECT_NEAR(post["inputs"]["speed"]["mean"].get<double>(), 33.0, 1.5);
+  EXPECT_NEAR(post["outputs"]["box.delta_v"]["mean"].get<double>(), 36.3, 1.0);
+}
+
 TEST_F(Ensemble, BenchReportsSamplesPerSecondAndMemory) {
   // figures present and positive (speeds are measured in the benchmarks, not asserted here)
   const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 8);

@@ -227,6 +227,37 @@ TEST(Statistics, SobolIndicesOfClosedFormModels) {
   EXPECT_NEAR(SobolOf(product, 0, n).total, 4.0 / 7.0, 0.03);
 }
 
+TEST(Evidence, PosteriorOfAnObservedInputIsTheLikelihood) {
+  // x uniform on [0, 1] observed directly as 0.3 +- 0.05: the posterior is that normal (its tails
+  // beyond [0, 1] are negligible); equal weights give an effective sample size of n
+  Spec spec;
+  spec.inputs.push_back(Input{"x"});
+  spec.evidence.push_back({"b.x", 0.3, 0.05});
+  std::vector<SampleRecord> records;
+  const int n = 4000;
+  for (int i = 0; i < n; ++i) {
+    SampleRecord r{i, "", "complete", {}, {Uniform(8, 1, i)}};
+    r.observables["b.x"] = r.inputs[0];
+    records.push_back(r);
+  }
+  double effective = 0.0;
+  const std::vector<double> w = EvidenceWeights(spec, records, &effective);
+  double sum = 0.0, mean = 0.0;
+  for (int i = 0; i < n; ++i) sum += w[i], mean += w[i] * records[i].inputs[0];
+  mean /= sum;
+  double var = 0.0;
+  for (int i = 0; i < n; ++i) var += w[i] * (records[i].inputs[0] - mean) * (records[i].inputs[0] - mean);
+  // sum w ~ n s sqrt(2 pi), sum w^2 ~ n s sqrt(pi): ESS ~ 2 sqrt(pi) n s = 709; the posterior
+  // mean's error ~ s / sqrt(ESS) ~ 0.002
+  EXPECT_NEAR(mean, 0.3, 0.01);
+  EXPECT_NEAR(std::sqrt(var / sum), 0.05, 0.005);
+  const double pi = 4 * std::atan(1.0);
+  EXPECT_NEAR(effective, 2 * std::sqrt(pi) * n * 0.05, 0.1 * 2 * std::sqrt(pi) * n * 0.05);
+  spec.evidence[0].sd = 1e6;  // no information: every weight 1
+  EvidenceWeights(spec, records, &effective);
+  EXPECT_NEAR(effective, n, 1e-6);
+}
+
 TEST(Crash3, CoefficientsFromB0AndB1) {
   // US: A = (W / g) (17.6 b0) (17.6 b1) / L, B = (W / g) (17.6 b1)^2 / L, g = 386.0886 in/s^2
   Crash3Preset p;

@@ -35,6 +35,14 @@ struct Threshold {
   double above = 0.0;
 };
 
+/// A measurement the samples are weighed against: the observable (an output "BODY.QUANTITY", or
+/// "BODY.c1".."BODY.c6", "BODY.rest_x", "BODY.rest_y", "BODY.rest_heading"), its measured value and
+/// its standard deviation (scenario units); each complete sample gets the Gaussian likelihood.
+struct Evidence {
+  std::string observable;
+  double value = 0.0, sd = 1.0;
+};
+
 /// CRASH3 stiffness of one body surface from sampled b0 (no-damage speed) and b1 (slope): never A
 /// and B independently. A = m b0 b1 / L, B = m b1^2 / L (m the mass, L the damage width), written
 /// as the surface's 2-D coefficients.
@@ -64,6 +72,7 @@ struct Spec {
   std::vector<std::vector<double>> table;  ///< table design: one row of input values per sample
   std::uint64_t seed = 1;
   std::vector<Threshold> thresholds;
+  std::vector<Evidence> evidence;
   std::vector<Crash3Preset> crash3;
   Correlation correlation;
   std::uint64_t hash = 0;      ///< of the spec and the base scenario text: records carry it

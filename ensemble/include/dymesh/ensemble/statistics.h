@@ -46,6 +46,10 @@ struct SobolIndices {
 };
 SobolIndices SobolFromSaltelli(const std::vector<double>& fa, const std::vector<double>& fb, const std::vector<double>& fab);
 
+/// The evidence weights of the records (0 for those not complete or missing an observable), and
+/// their effective sample size (sum w)^2 / sum w^2.
+std::vector<double> EvidenceWeights(const Spec& spec, const std::vector<SampleRecord>& records, double* effective);
+
 /// ensemble.json text: counts by status, statistics per output, exceedance probabilities.
 std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& records);
 
