@@ -6,7 +6,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -135,11 +137,19 @@ class Collector {
     if (options_.progress) options_.progress(counts_.resumed + ++added_, counts_.total);
   }
 
-  // counts, and the results once the shard is whole
-  RunCounts Finish() {
+  // the records so far (call between parallel sections)
+  const std::map<int, SampleRecord>& records() const { return records_; }
+
+  // counts, and the results once the shard is whole (up to `limit` samples when the stop
+  // tolerance ended the run early)
+  RunCounts Finish(int limit) {
     std::map<int, SampleRecord> mine;
     for (const auto& [index, r] : records_)
-      if (index % options_.shards == options_.shard - 1) mine.emplace(index, r);
+      if (index % options_.shards == options_.shard - 1 && index < limit) mine.emplace(index, r);
+    if (limit < spec_.samples) {
+      counts_.total = static_cast<int>(mine.size());
+      counts_.resumed = std::min(counts_.resumed, counts_.total);
+    }
     counts_.ran = static_cast<int>(mine.size()) - counts_.resumed;
     for (const auto& [index, r] : mine) counts_.failed += r.status != "complete";
     counts_.finished = static_cast<int>(mine.size()) == counts_.total;
@@ -166,19 +176,71 @@ class Collector {
 
 }  // namespace
 
+namespace {
+
+// mean, P5 and P95 of every output over the complete samples with an index below `end`
+using Checkpoint = std::map<std::string, std::array<double, 3>>;
+Checkpoint CheckpointOf(const std::map<int, SampleRecord>& records, int end) {
+  std::vector<SampleRecord> head;
+  for (const auto& [index, r] : records)
+    if (index < end) head.push_back(r);
+  Checkpoint c;
+  for (const auto& [name, s] : ComputeStatistics(head)) c[name] = {s.mean, s.p5, s.p95};
+  return c;
+}
+
+// every figure moved by less than `tolerance` of its size since the previous checkpoint
+bool Converged(const Checkpoint& before, const Checkpoint& now, double tolerance) {
+  if (before.empty() || before.size() != now.size()) return false;
+  for (const auto& [name, figures] : now) {
+    const auto it = before.find(name);
+    if (it == before.end()) return false;
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(figures[k] - it->second[k]) > tolerance * std::max(std::abs(it->second[k]), 1e-12)) return false;
+  }
+  return true;
+}
+
+// the sample counts at which a run with a stop tolerance checks itself: min, 2 min, 4 min, ... samples
+std::vector<int> Checkpoints(const Spec& spec) {
+  std::vector<int> ends;
+  for (int n = spec.stop_relative > 0.0 ? spec.stop_min_samples : spec.samples; n < spec.samples; n *= 2) ends.push_back(n);
+  ends.push_back(spec.samples);
+  return ends;
+}
+
+}  // namespace
+
 RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
+  if (spec.stop_relative > 0.0 && options.shards > 1)
+    throw InputError(spec.file, "stop_tolerance", "needs the whole ensemble in one run (no --shard)");
   Collector collector(spec, options);
-  // the missing samples, on oneTBB; each record journaled as it completes
   const DesignTable design(spec);
   SharedAssets meshes;
-  const std::vector<int>& todo = collector.todo();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
-    for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      if (options.stop && options.stop()) return;
-      collector.Add(RunSample(spec, todo[k], design.Values(todo[k]), &meshes).line);
+  // the missing samples, on oneTBB, up to each checkpoint in turn; each record journaled as it completes
+  int limit = spec.samples;
+  Checkpoint previous;
+  for (const int end : Checkpoints(spec)) {
+    std::vector<int> todo;  // below this checkpoint and not recorded yet (read before the parallel loop)
+    for (int i : collector.todo())
+      if (i < end && !collector.records().count(i)) todo.push_back(i);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t k = range.begin(); k != range.end(); ++k) {
+        if (options.stop && options.stop()) return;
+        collector.Add(RunSample(spec, todo[k], design.Values(todo[k]), &meshes).line);
+      }
+    });
+    if (options.stop && options.stop()) break;
+    // the stop tolerance: every output's mean, P5 and P95 settled since the last checkpoint
+    if (spec.stop_relative <= 0.0) continue;
+    const Checkpoint now = CheckpointOf(collector.records(), end);
+    if (Converged(previous, now, spec.stop_relative)) {
+      limit = end;
+      break;
     }
-  });
-  return collector.Finish();
+    previous = now;
+  }
+  return collector.Finish(limit);
 }
 
 #ifdef DYMESH_WITH_MPI
@@ -234,13 +296,15 @@ RunCounts MpiMaster(const Spec& spec, const RunOptions& options, int size) {
     MPI_Send(chunk, n, MPI_INT, status.MPI_SOURCE, kTagChunk, MPI_COMM_WORLD);
     if (n == 0) ++stopped;
   }
-  return collector.Finish();
+  return collector.Finish(spec.samples);
 }
 
 }  // namespace
 
 RunCounts RunEnsembleMpi(const Spec& spec, const RunOptions& options, int rank, int size) {
   if (size <= 1) return RunEnsemble(spec, options);
+  if (spec.stop_relative > 0.0)
+    throw InputError(spec.file, "stop_tolerance", "is not supported across MPI ranks yet: run it on threads");
   if (rank != 0) {
     MpiWorker(spec);
     return RunCounts{};

@@ -279,9 +279,9 @@ Spec LoadSpec(const std::string& path) {
   for (const auto& item : j.items())
     if (item.key() != "scenario" && item.key() != "inputs" && item.key() != "design" && item.key() != "samples" &&
         item.key() != "seed" && item.key() != "thresholds" && item.key() != "crash3" && item.key() != "correlation" &&
-        item.key() != "table" && item.key() != "evidence")
+        item.key() != "table" && item.key() != "evidence" && item.key() != "stop_tolerance")
       r.Fail(item.key(), "unknown key; allowed keys: scenario, inputs, crash3, correlation, design, samples, seed, "
-                         "thresholds, table, evidence");
+                         "thresholds, table, evidence, stop_tolerance");
   // the base scenario, relative to the spec
   const Json& scenario = r.Require(j, "", "scenario");
   if (!scenario.is_string()) r.Fail("scenario", "expected a scenario file name");
@@ -342,6 +342,16 @@ Spec LoadSpec(const std::string& path) {
       if (!(sd > 0.0)) r.Fail(at + ".sd", "expected a standard deviation > 0");
       spec.evidence.push_back({observable.get<std::string>(), r.Number(r.Require(e, at, "value"), at + ".value"), sd});
     }
+  }
+  if (j.contains("stop_tolerance")) {
+    const Json& t = j["stop_tolerance"];
+    spec.stop_relative = r.Number(r.Require(t, "stop_tolerance", "relative"), "stop_tolerance.relative");
+    const double m = t.contains("min_samples") ? r.Number(t["min_samples"], "stop_tolerance.min_samples") : 50;
+    if (!(spec.stop_relative > 0.0 && spec.stop_relative < 1.0)) r.Fail("stop_tolerance.relative", "expected a value in (0, 1)");
+    if (m < 2 || std::floor(m) != m) r.Fail("stop_tolerance.min_samples", "expected an integer >= 2");
+    spec.stop_min_samples = static_cast<int>(m);
+    if (spec.design != Design::kMonteCarlo && spec.design != Design::kLatinHypercube)
+      r.Fail("stop_tolerance", "needs a random design (monte_carlo or latin_hypercube)");
   }
   // deterministic designs set their own sample count
   SizeDeterministicDesign(r, j, &spec);

@@ -279,6 +279,8 @@ std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& reco
   j["spec_hash"] = HashText(spec.hash);
   j["engine_version"] = kEngineVersion;
   j["samples"] = records.size();
+  // a stop tolerance that ended the run before its sample count
+  if (spec.stop_relative > 0.0 && static_cast<int>(records.size()) < spec.samples) j["converged_at_samples"] = records.size();
   // counts by status: only complete samples enter the statistics
   nlohmann::json counts = nlohmann::json::object();
   for (const SampleRecord& r : records) counts[r.status] = counts.value(r.status, 0) + 1;

@@ -183,6 +183,24 @@ TEST_F(Ensemble, EvidenceGivesThePosteriorOfTheImpactSpeed) {
   EXPECT_NEAR(post["outputs"]["box.delta_v"]["mean"].get<double>(), 36.3, 1.0);
 }
 
+TEST_F(Ensemble, StopToleranceEndsAtASettledCheckpointTheSameAtAnyThreadCount) {
+  // checkpoints at 8, 16, 32, 64 samples; a loose 10 % tolerance settles before 64
+  std::string path = dymesh::testing::WriteBoxSpec(dir_, 64, "monte_carlo");
+  std::string text = ReadFile(path);
+  text.insert(text.rfind('}'), R"(, "stop_tolerance": {"relative": 0.1, "min_samples": 8})");
+  std::ofstream(path) << text;
+  for (const char* threads : {"1", "2"})
+    ASSERT_EQ(Dymesh({"ensemble", path, "--quiet", "--threads", threads, "--out", (dir_ / threads).string()}).exit_code, 0);
+  const nlohmann::json stats = nlohmann::json::parse(ReadFile(dir_ / "1" / "ensemble.json"));
+  ASSERT_TRUE(stats.contains("converged_at_samples")) << stats.dump();
+  const int n = stats["converged_at_samples"].get<int>();
+  EXPECT_TRUE(n == 16 || n == 32) << n;
+  const std::string lines = ReadFile(dir_ / "1" / "samples.jsonl");
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), n);
+  EXPECT_EQ(lines, ReadFile(dir_ / "2" / "samples.jsonl"));
+  EXPECT_EQ(ReadFile(dir_ / "1" / "ensemble.json"), ReadFile(dir_ / "2" / "ensemble.json"));
+}
+
 TEST_F(Ensemble, BenchReportsSamplesPerSecondAndMemory) {
   // figures present and positive (speeds are measured in the benchmarks, not asserted here)
   const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 8);

@@ -73,6 +73,8 @@ struct Spec {
   std::uint64_t seed = 1;
   std::vector<Threshold> thresholds;
   std::vector<Evidence> evidence;
+  double stop_relative = 0.0;   ///< stop once mean, P5 and P95 of every output move less than this (relative)
+  int stop_min_samples = 0;     ///< ... between checkpoints at min, 2 min, 4 min, ... samples
   std::vector<Crash3Preset> crash3;
   Correlation correlation;
   std::uint64_t hash = 0;      ///< of the spec and the base scenario text: records carry it
