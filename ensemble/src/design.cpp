@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "dymesh/ensemble/random_stream.h"
+#include "dymesh/ensemble/sobol_sequence.h"
 
 namespace dymesh::ensemble {
 
@@ -34,6 +35,12 @@ std::vector<double> DesignTable::Values(int sample) const {
       const int j = sample / group, m = sample % group;
       const bool from_b = m == 1 || m == 2 + static_cast<int>(k);
       u.push_back(Uniform(spec_.seed, stream, j, from_b ? 2 : 0));
+      continue;
+    }
+    if (spec_.design == Design::kSobol) {
+      // the input's dimension, shifted by a random 32-bit mask of its own stream
+      const auto shift = static_cast<std::uint32_t>(Uniform(spec_.seed, stream, 0, 3) * 4294967296.0);
+      u.push_back(ShiftedSobolCoordinate(static_cast<std::uint64_t>(sample), static_cast<int>(k), shift));
       continue;
     }
     u.push_back(Uniform(spec_.seed, stream, sample, 0));

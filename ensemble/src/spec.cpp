@@ -11,6 +11,7 @@
 
 #include "dymesh/core/scenario.h"
 #include "dymesh/ensemble/random_stream.h"
+#include "dymesh/ensemble/sobol_sequence.h"
 #include "dymesh/io/scenario_json.h"
 
 namespace dymesh::ensemble {
@@ -309,8 +310,9 @@ Spec LoadSpec(const std::string& path) {
     else if (d == "grid") spec.design = Design::kGrid;
     else if (d == "one_at_a_time") spec.design = Design::kOneAtATime;
     else if (d == "table") spec.design = Design::kTable;
+    else if (d == "sobol") spec.design = Design::kSobol;
     else r.Fail("design", "expected \"monte_carlo\", \"latin_hypercube\", \"saltelli\", \"grid\", \"one_at_a_time\" or "
-                          "\"table\", got " + j["design"].dump());
+                          "\"table\" or \"sobol\", got " + j["design"].dump());
   }
   if (j.contains("samples")) {
     const double n = r.Number(j["samples"], "samples");
@@ -350,9 +352,12 @@ Spec LoadSpec(const std::string& path) {
     if (!(spec.stop_relative > 0.0 && spec.stop_relative < 1.0)) r.Fail("stop_tolerance.relative", "expected a value in (0, 1)");
     if (m < 2 || std::floor(m) != m) r.Fail("stop_tolerance.min_samples", "expected an integer >= 2");
     spec.stop_min_samples = static_cast<int>(m);
-    if (spec.design != Design::kMonteCarlo && spec.design != Design::kLatinHypercube)
-      r.Fail("stop_tolerance", "needs a random design (monte_carlo or latin_hypercube)");
+    if (spec.design != Design::kMonteCarlo && spec.design != Design::kLatinHypercube && spec.design != Design::kSobol)
+      r.Fail("stop_tolerance", "needs a random design (monte_carlo, latin_hypercube or sobol)");
   }
+  if (spec.design == Design::kSobol && spec.inputs.size() > static_cast<std::size_t>(kSobolDimensions))
+    r.Fail("design", "the Sobol' sequence has " + std::to_string(kSobolDimensions) + " dimensions; this spec has " +
+                         std::to_string(spec.inputs.size()) + " inputs");
   // deterministic designs set their own sample count
   SizeDeterministicDesign(r, j, &spec);
   // Saltelli: `samples` counts the rows of A and B; each row runs inputs + 2 times

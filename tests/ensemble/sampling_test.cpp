@@ -10,6 +10,7 @@
 #include "dymesh/ensemble/design.h"
 #include "dymesh/ensemble/distribution.h"
 #include "dymesh/ensemble/random_stream.h"
+#include "dymesh/ensemble/sobol_sequence.h"
 #include "dymesh/ensemble/statistics.h"
 #include "dymesh/core/scenario.h"
 
@@ -98,6 +99,48 @@ TEST(Sampling, LatinHypercubeFillsEveryStratumOnce) {
     }
     for (int h : hits) EXPECT_EQ(h, 1);
   }
+}
+
+TEST(Sobol, FirstPointsOfTheKnownSequence) {
+  // the unshifted sequence in natural (not Gray-code) order: dimension 1 is van der Corput's,
+  // dimension 2 has directions 1/2, 3/4, 5/8, ... (x^1 + 1, m_1 = 1)
+  const double d0[] = {0.0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875};
+  const double d1[] = {0.0, 0.5, 0.75, 0.25, 0.625, 0.125, 0.375, 0.875};
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_EQ(SobolCoordinate(i, 0), d0[i]) << i;
+    EXPECT_EQ(SobolCoordinate(i, 1), d1[i]) << i;
+  }
+}
+
+TEST(Sobol, EveryDimensionStratifiesAndTheFirstPairIsANet) {
+  // the first 2^m points: one per interval of length 2^-m in every dimension, and (dimensions 1 and
+  // 2, t = 0) one per cell of a 2^(m/2) x 2^(m/2) grid, shifted or not
+  const int m = 10, n = 1 << m;
+  for (std::uint32_t shift : {0u, 0x9e3779b9u}) {
+    for (int d = 0; d < kSobolDimensions; ++d) {
+      std::vector<int> hits(n, 0);
+      for (int i = 0; i < n; ++i) ++hits[static_cast<int>(ShiftedSobolCoordinate(i, d, shift) * n)];
+      EXPECT_EQ(*std::min_element(hits.begin(), hits.end()), 1) << "dimension " << d;
+    }
+    std::vector<int> cells(n, 0);
+    for (int i = 0; i < n; ++i)
+      ++cells[static_cast<int>(ShiftedSobolCoordinate(i, 0, shift) * 32) * 32 + static_cast<int>(ShiftedSobolCoordinate(i, 1, shift) * 32)];
+    EXPECT_EQ(*std::max_element(cells.begin(), cells.end()), 1);
+  }
+}
+
+TEST(Designs, SobolDesignStratifiesEveryInput) {
+  // 64 points of the shifted sequence through the uniform quantiles: one per 1/64 of each range
+  const Spec spec = LoadSpec(testing::WriteBoxSpec(::testing::TempDir() + "/sobol", 64, "sobol"));
+  const DesignTable design(spec);
+  std::vector<int> speed(64, 0), restitution(64, 0);
+  for (int i = 0; i < 64; ++i) {
+    const std::vector<double> v = design.Values(i);
+    ++speed[static_cast<int>((v[0] - 25.0) / 10.0 * 64)];
+    ++restitution[static_cast<int>(v[1] / 0.2 * 64)];
+  }
+  EXPECT_EQ(*std::min_element(speed.begin(), speed.end()), 1);
+  EXPECT_EQ(*std::min_element(restitution.begin(), restitution.end()), 1);
 }
 
 TEST(Designs, GridOneAtATimeAndTableGiveTheirRuns) {
