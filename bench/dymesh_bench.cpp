@@ -11,11 +11,14 @@
 #include <mutex>
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include "contact_setup.h"
 #include "dymesh/core/contact_step.h"
 #include "dymesh/core/parallel.h"
 #include "locate_rates.h"
+#include "dymesh/ensemble/design.h"
+#include "dymesh/ensemble/sample_run.h"
 #ifdef DYMESH_WITH_CGAL
 #include "cgal_tree.h"
 #endif
@@ -193,6 +196,22 @@ BENCHMARK(BM_LocateCgal)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step)->ArgsProduct({{0, 1, 2}, {1, 2}})->Iterations(1)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_RefitVersusRebuild)->ArgsProduct({{1, 3, 5}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Memory)->DenseRange(0, 5)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// issue 11: samples of the p406 ensemble demo per second at 1 and 2 threads (meshes loaded once,
+// outside the timing; each iteration runs the same 4 samples)
+void BM_EnsembleSamples(benchmark::State& state) {
+  static const ensemble::Spec spec = ensemble::LoadSpec(std::string(DYMESH_DATA_DIR) + "/ensembles/p406_oblique.json");
+  static const ensemble::DesignTable design(spec);
+  static ensemble::SharedAssets assets;
+  ensemble::RunSample(spec, 0, design.Values(0), &assets);
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<int>(state.range(0)));
+  constexpr int kSamples = 4;
+  for (auto _ : state)
+    tbb::parallel_for(1, 1 + kSamples, [&](int i) { ensemble::RunSample(spec, i, design.Values(i), &assets); });
+  state.counters["samples_per_second"] =
+      benchmark::Counter(static_cast<double>(kSamples) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_EnsembleSamples)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 }  // namespace dymesh::bench
