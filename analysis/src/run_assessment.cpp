@@ -47,7 +47,7 @@ bool AtRestInContact(const Simulation& sim) {
     for (int b = a + 1; b < n; ++b)
       if ((sim.engine().state(a).rigid.velocity - sim.engine().state(b).rigid.velocity).norm() > kRestSpeed)
         return false;
-  const int window = std::max(1, static_cast<int>(0.02 / sim.scenario().time_step));
+  const int window = std::max(1, static_cast<int>(kSeparationWindow / sim.scenario().time_step));
   if (static_cast<int>(h.size()) <= window) return false;
   return TotalLoad(h.back()) <= TotalLoad(h[h.size() - 1 - window]) * (1.0 + 1e-9);
 }

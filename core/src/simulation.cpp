@@ -9,8 +9,6 @@
 namespace dymesh {
 namespace {
 
-// a body with no collision load for this long after contact has separated
-constexpr double kSeparationWindow = 0.02;  // [s]
 
 }  // namespace
 

@@ -27,6 +27,10 @@ struct Sample {
   std::vector<BodySample> bodies;
 };
 
+/// Bodies with no collision load for this long after contact have separated [s]; also the window
+/// over which a run at rest in contact must show no growing force.
+inline constexpr double kSeparationWindow = 0.02;
+
 /// A run of a scenario; owns everything it touches (no global state).
 class Simulation {
  public:
