@@ -15,8 +15,10 @@ namespace {
 // for sure (float rounding and the inflation together stay below two inflations)
 constexpr double kInsideMargin = 8.0;
 
-// triangles per Embree geometry: a crush refits only the groups it touches
-constexpr size_t kGroupSize = 4096;
+// triangles per Embree geometry: a crush refits only the groups it touches. Measured (Embree 3.13,
+// 2 cores, 2026-11-23): a scene of three or more geometries pays ~0.4 ms per commit whatever their
+// size, while one geometry refits 8k triangles in ~50 us; groups pay off only on meshes of 100k+
+constexpr size_t kGroupSize = 65536;
 
 RTCDevice Dev(const EmbreeDevice& d) { return static_cast<RTCDevice>(d.handle()); }
 
@@ -116,9 +118,10 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   }
   for (size_t first = 0; first < nt; first += kGroupSize) group_first_.push_back(static_cast<int>(first));
   group_first_.push_back(static_cast<int>(nt));
-  // a deformable scene: DYNAMIC (two-level: only modified groups are refit), LOW quality, ROBUST
+  // a deformable scene: DYNAMIC (two-level: only modified groups are refit), COMPACT (leaves hold
+  // indices, so a refit copies no vertices), LOW quality, ROBUST
   RTCScene scene = rtcNewScene(Dev(*device_));
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_COMPACT | RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
   for (size_t g = 0; g + 1 < group_first_.size(); ++g) {
     RTCGeometry geom = rtcNewGeometry(Dev(*device_), RTC_GEOMETRY_TYPE_TRIANGLE);
