@@ -38,9 +38,9 @@ std::vector<double> DesignTable::Values(int sample) const {
       continue;
     }
     if (spec_.design == Design::kSobol) {
-      // the input's dimension, shifted by a random 32-bit mask of its own stream
-      const auto shift = static_cast<std::uint32_t>(Uniform(spec_.seed, stream, 0, 3) * 4294967296.0);
-      u.push_back(ShiftedSobolCoordinate(static_cast<std::uint64_t>(sample), static_cast<int>(k), shift));
+      // the input's dimension, Owen-scrambled by a random 32-bit seed of its own stream
+      const auto seed = static_cast<std::uint32_t>(Uniform(spec_.seed, stream, 0, 3) * 4294967296.0);
+      u.push_back(ScrambledSobolCoordinate(static_cast<std::uint64_t>(sample), static_cast<int>(k), seed));
       continue;
     }
     u.push_back(Uniform(spec_.seed, stream, sample, 0));

@@ -59,12 +59,33 @@ std::uint32_t Bits(std::uint64_t index, int dimension) {
   return x;
 }
 
+std::uint32_t ReverseBits(std::uint32_t x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
+  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
+  return (x >> 16) | (x << 16);
+}
+
+// Burley's Laine-Karras hash: adding the seed and XOR-ing products with even constants changes each
+// bit only as a function of the bits below it, so on reversed digits it is a nested scramble
+std::uint32_t LaineKarras(std::uint32_t x, std::uint32_t seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return x;
+}
+
 }  // namespace
 
 double SobolCoordinate(std::uint64_t index, int dimension) { return Bits(index, dimension) / 4294967296.0; }
 
-double ShiftedSobolCoordinate(std::uint64_t index, int dimension, std::uint32_t shift) {
-  return ((Bits(index, dimension) ^ shift) + 0.5) / 4294967296.0;
+double ScrambledSobolCoordinate(std::uint64_t index, int dimension, std::uint32_t seed) {
+  // digit k of the fraction is bit k of the reversed word: the hash flips it by the digits before it
+  const std::uint32_t scrambled = ReverseBits(LaineKarras(ReverseBits(Bits(index, dimension)), seed));
+  return (scrambled + 0.5) / 4294967296.0;
 }
 
 }  // namespace dymesh::ensemble

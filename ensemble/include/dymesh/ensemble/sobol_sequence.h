@@ -2,8 +2,8 @@
 #include <cstdint>
 
 /// Sobol' low-discrepancy points (Joe and Kuo's direction numbers, up to 16 dimensions), each
-/// dimension scrambled by a random digital shift: the net structure stays, the points become an
-/// unbiased randomized quasi-Monte Carlo sample.
+/// dimension Owen-scrambled (a nested uniform scramble, hashed after Burley 2020): the net structure
+/// stays, every point is uniform, and the points become a randomized quasi-Monte Carlo sample.
 namespace dymesh::ensemble {
 
 /// Dimensions available.
@@ -14,7 +14,8 @@ inline constexpr int kSobolDimensions = 16;
 /// as in Gray-code order), in [0, 1).
 double SobolCoordinate(std::uint64_t index, int dimension);
 
-/// The same point digitally shifted by `shift` (XOR of the 32-bit fraction), in (0, 1).
-double ShiftedSobolCoordinate(std::uint64_t index, int dimension, std::uint32_t shift);
+/// The same coordinate Owen-scrambled with `seed`: each binary digit flipped by a hash of the digits
+/// above it (the Laine-Karras permutation on the reversed bits), in (0, 1).
+double ScrambledSobolCoordinate(std::uint64_t index, int dimension, std::uint32_t seed);
 
 }  // namespace dymesh::ensemble

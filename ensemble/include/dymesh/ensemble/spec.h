@@ -18,7 +18,7 @@ namespace dymesh::ensemble {
 /// kGrid: every combination of each input's `levels` equal-probability quantiles (mixed radix, the
 /// first input fastest). kOneAtATime: run 0 at every input's median, then per input i run 1 + 2i at
 /// its 5th and 2 + 2i at its 95th percentile, the others at their medians. kTable: the spec's rows.
-/// kSobol: the digitally shifted Sobol' sequence (one dimension per input, in input order).
+/// kSobol: the Owen-scrambled Sobol' sequence (one dimension per input, in input order).
 enum class Design { kMonteCarlo, kLatinHypercube, kSaltelli, kGrid, kOneAtATime, kTable, kSobol };
 
 struct Input {
