@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <deque>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -125,7 +126,13 @@ class Collector {
     journal_ = std::make_unique<Journal>(dir_ / kJournalName);
   }
 
-  const std::vector<int>& todo() const { return todo_; }
+  // the samples still to run below `end`
+  std::vector<int> TodoBelow(int end) const {
+    std::vector<int> todo;
+    for (int i : todo_)
+      if (i < end && !records_.count(i)) todo.push_back(i);
+    return todo;
+  }
 
   // a finished sample: journaled, then kept as read back (the same numbers after a resume)
   void Add(const std::string& line) {
@@ -209,6 +216,15 @@ std::vector<int> Checkpoints(const Spec& spec) {
   return ends;
 }
 
+// the stop tolerance at a checkpoint: every output's mean, P5 and P95 settled since the previous one
+bool SettledAt(const Spec& spec, const std::map<int, SampleRecord>& records, int end, Checkpoint* previous) {
+  if (spec.stop_relative <= 0.0) return false;
+  const Checkpoint now = CheckpointOf(records, end);
+  const bool settled = Converged(*previous, now, spec.stop_relative);
+  *previous = now;
+  return settled;
+}
+
 }  // namespace
 
 RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
@@ -221,9 +237,8 @@ RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
   int limit = spec.samples;
   Checkpoint previous;
   for (const int end : Checkpoints(spec)) {
-    std::vector<int> todo;  // below this checkpoint and not recorded yet (read before the parallel loop)
-    for (int i : collector.todo())
-      if (i < end && !collector.records().count(i)) todo.push_back(i);
+    // below this checkpoint and not recorded yet (read before the parallel loop)
+    const std::vector<int> todo = collector.TodoBelow(end);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
         if (options.stop && options.stop()) return;
@@ -231,14 +246,10 @@ RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
       }
     });
     if (options.stop && options.stop()) break;
-    // the stop tolerance: every output's mean, P5 and P95 settled since the last checkpoint
-    if (spec.stop_relative <= 0.0) continue;
-    const Checkpoint now = CheckpointOf(collector.records(), end);
-    if (Converged(previous, now, spec.stop_relative)) {
+    if (SettledAt(spec, collector.records(), end, &previous)) {
       limit = end;
       break;
     }
-    previous = now;
   }
   return collector.Finish(limit);
 }
@@ -268,11 +279,18 @@ void MpiWorker(const Spec& spec) {
   }
 }
 
-// the master: hands out chunks on request (a dynamic queue), collects the records, stops the workers
+// the master: hands out chunks on request (a dynamic queue), collects the records, stops the workers.
+// With a stop tolerance it works checkpoint by checkpoint, as a threaded run does: a checkpoint's
+// samples are handed out, its statistics judged once all their records are in, then the next one
 RunCounts MpiMaster(const Spec& spec, const RunOptions& options, int size) {
   Collector collector(spec, options);
-  const std::vector<int>& todo = collector.todo();
-  std::size_t next = 0;
+  const std::vector<int> ends = Checkpoints(spec);
+  std::size_t phase = 0, next = 0;
+  std::vector<int> todo = collector.TodoBelow(ends[0]);
+  Checkpoint previous;
+  int limit = spec.samples;
+  bool done = false;
+  std::deque<int> waiting;  // ranks that asked for work
   int outstanding = 0, stopped = 0;
   while (stopped < size - 1) {
     MPI_Status status;
@@ -287,24 +305,46 @@ RunCounts MpiMaster(const Spec& spec, const RunOptions& options, int size) {
       continue;
     }
     MPI_Recv(nullptr, 0, MPI_INT, status.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    // the next chunk, or none once the queue is empty (or a stop was asked)
-    int chunk[kChunk];
-    int n = 0;
-    const bool stop = options.stop && options.stop();
-    while (!stop && n < kChunk && next < todo.size()) chunk[n++] = todo[next++];
-    outstanding += n;
-    MPI_Send(chunk, n, MPI_INT, status.MPI_SOURCE, kTagChunk, MPI_COMM_WORLD);
-    if (n == 0) ++stopped;
+    waiting.push_back(status.MPI_SOURCE);
+    while (!waiting.empty()) {
+      const bool stop = done || (options.stop && options.stop());
+      if (!stop && next < todo.size()) {
+        // the next chunk of this checkpoint
+        int chunk[kChunk];
+        int n = 0;
+        while (n < kChunk && next < todo.size()) chunk[n++] = todo[next++];
+        outstanding += n;
+        MPI_Send(chunk, n, MPI_INT, waiting.front(), kTagChunk, MPI_COMM_WORLD);
+        waiting.pop_front();
+        continue;
+      }
+      if (!stop) {
+        // the checkpoint is handed out: wait for its last records, then judge it
+        if (outstanding > 0) break;
+        if (SettledAt(spec, collector.records(), ends[phase], &previous)) {
+          limit = ends[phase];
+          done = true;
+        } else if (++phase == ends.size()) {
+          done = true;
+        } else {
+          todo = collector.TodoBelow(ends[phase]);
+          next = 0;
+        }
+        continue;
+      }
+      // no more work: an empty chunk ends the worker
+      MPI_Send(nullptr, 0, MPI_INT, waiting.front(), kTagChunk, MPI_COMM_WORLD);
+      waiting.pop_front();
+      ++stopped;
+    }
   }
-  return collector.Finish(spec.samples);
+  return collector.Finish(limit);
 }
 
 }  // namespace
 
 RunCounts RunEnsembleMpi(const Spec& spec, const RunOptions& options, int rank, int size) {
   if (size <= 1) return RunEnsemble(spec, options);
-  if (spec.stop_relative > 0.0)
-    throw InputError(spec.file, "stop_tolerance", "is not supported across MPI ranks yet: run it on threads");
   if (rank != 0) {
     MpiWorker(spec);
     return RunCounts{};

@@ -104,6 +104,29 @@ TEST_F(Ensemble, OneTwoAndThreeMpiRanksGiveTheSameBytes) {
       EXPECT_EQ(ReadFile(out / name), ReadFile(dir_ / "plain" / name)) << ranks << " ranks: " << name;
   }
 }
+
+TEST_F(Ensemble, StopToleranceAcrossMpiRanksEndsWhereThreadsDo) {
+  // the master judges each checkpoint once all its records are in: the same samples and bytes as a
+  // threaded run, at 2 and 3 ranks
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  std::string path = dymesh::testing::WriteBoxSpec(dir_, 64, "monte_carlo");
+  std::string text = ReadFile(path);
+  text.insert(text.rfind('}'), R"(, "stop_tolerance": {"relative": 0.1, "min_samples": 8})");
+  std::ofstream(path) << text;
+  ASSERT_EQ(Dymesh({"ensemble", path, "--quiet", "--out", (dir_ / "threads").string()}).exit_code, 0);
+  const std::string lines = ReadFile(dir_ / "threads" / "samples.jsonl");
+  ASSERT_LT(std::count(lines.begin(), lines.end(), '\n'), 64);
+  for (const char* ranks : {"2", "3"}) {
+    const fs::path out = dir_ / (std::string("ranks") + ranks);
+    const ProcessResult r = dymesh::testing::RunProcess(
+        {DYMESH_MPIEXEC, "--oversubscribe", "-np", ranks, DYMESH_CLI, "ensemble", path, "--quiet", "--out", out.string()},
+        dir_ / "process", 300.0);
+    ASSERT_EQ(r.exit_code, 0) << ranks << " ranks\n" << r.err;
+    for (const char* name : {"samples.jsonl", "ensemble.json", "report.html"})
+      EXPECT_EQ(ReadFile(out / name), ReadFile(dir_ / "threads" / name)) << ranks << " ranks: " << name;
+  }
+}
 #endif
 
 TEST_F(Ensemble, KilledRunResumesToTheSameBytes) {
