@@ -15,10 +15,12 @@ namespace {
 // for sure (float rounding and the inflation together stay below two inflations)
 constexpr double kInsideMargin = 8.0;
 
-// triangles per Embree geometry: a crush refits only the groups it touches. Measured (Embree 3.13,
-// 2 cores, 2026-11-23): a scene of three or more geometries pays ~0.4 ms per commit whatever their
-// size, while one geometry refits 8k triangles in ~50 us; groups pay off only on meshes of 100k+
-constexpr size_t kGroupSize = 65536;
+// triangles per Embree geometry on a large mesh: a crush refits only the groups it touches
+constexpr size_t kGroupSize = 4096;
+// up to this many triangles a mesh is one geometry. Measured (Embree 3.13, 2 cores, 2026-11-23): a
+// scene of three or more geometries pays ~0.4 ms per commit whatever their size, while one geometry
+// of 8k triangles refits in ~70 us; on a million triangles the groups win
+constexpr size_t kSingleGeometryLimit = 65536;
 
 RTCDevice Dev(const EmbreeDevice& d) { return static_cast<RTCDevice>(d.handle()); }
 
@@ -101,7 +103,8 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   // barycentric margin of each triangle: kInsideMargin inflations over its smallest altitude
   edge_margin_.resize(nt);
   for (size_t t = 0; t < nt; ++t) UpdateEdgeMargin(mesh.vertices, static_cast<int>(t));
-  // groups: triangles in Morton order of their centres, cut into runs of kGroupSize
+  // groups: triangles in Morton order of their centres, cut into runs of kGroupSize (a small mesh: one run)
+  const size_t group_size = nt <= kSingleGeometryLimit ? std::max<size_t>(nt, 1) : kGroupSize;
   std::vector<std::pair<std::uint32_t, int>> order(nt);
   const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-9));
   for (size_t t = 0; t < nt; ++t) {
@@ -114,14 +117,13 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   triangle_group_.resize(nt);
   for (size_t i = 0; i < nt; ++i) {
     group_triangles_[i] = order[i].second;
-    triangle_group_[order[i].second] = static_cast<int>(i / kGroupSize);
+    triangle_group_[order[i].second] = static_cast<int>(i / group_size);
   }
-  for (size_t first = 0; first < nt; first += kGroupSize) group_first_.push_back(static_cast<int>(first));
+  for (size_t first = 0; first < nt; first += group_size) group_first_.push_back(static_cast<int>(first));
   group_first_.push_back(static_cast<int>(nt));
-  // a deformable scene: DYNAMIC (two-level: only modified groups are refit), COMPACT (leaves hold
-  // indices, so a refit copies no vertices), LOW quality, ROBUST
+  // a deformable scene: DYNAMIC (two-level: only modified groups are refit), LOW quality, ROBUST
   RTCScene scene = rtcNewScene(Dev(*device_));
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_COMPACT | RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
   for (size_t g = 0; g + 1 < group_first_.size(); ++g) {
     RTCGeometry geom = rtcNewGeometry(Dev(*device_), RTC_GEOMETRY_TYPE_TRIANGLE);
