@@ -20,6 +20,33 @@ DesignTable::DesignTable(const Spec& spec) : spec_(spec) {
     for (int rank = 0; rank < spec.samples; ++rank) stratum[keys[rank].second] = rank;
     strata_.push_back(std::move(stratum));
   }
+  if (!spec.correlation.inputs.empty()) InduceRankCorrelation();
+}
+
+void DesignTable::InduceRankCorrelation() {
+  // Iman and Conover (1982): the correlated inputs keep their strata, re-paired between samples so
+  // that their ranks follow normal scores carrying the copula's correlation. Scores: van der
+  // Waerden's of each input's current strata (independent random permutations)
+  const Correlation& c = spec_.correlation;
+  const int n = spec_.samples, k = static_cast<int>(c.inputs.size());
+  Eigen::MatrixXd scores(n, k);
+  for (int a = 0; a < k; ++a)
+    for (int j = 0; j < n; ++j) scores(j, a) = NormalQuantile((strata_[c.inputs[a]][j] + 0.5) / n);
+  // the scores' own correlation E = Q Q^T is replaced by the target P = L L^T: rows s -> L Q^-1 s
+  const Eigen::MatrixXd centred = scores.rowwise() - scores.colwise().mean();
+  const Eigen::MatrixXd covariance = centred.transpose() * centred / std::max(n - 1, 1);
+  const Eigen::VectorXd sd = covariance.diagonal().cwiseSqrt();
+  const Eigen::MatrixXd own = covariance.cwiseQuotient(sd * sd.transpose());
+  const Eigen::LLT<Eigen::MatrixXd> llt(own);
+  if (llt.info() != Eigen::Success) return;  // too few samples to carry a correlation: left independent
+  const Eigen::MatrixXd target = (c.cholesky * llt.matrixL().solve(scores.transpose())).transpose();
+  // each input's strata handed out in the order of its target column (ties: lower sample first)
+  for (int a = 0; a < k; ++a) {
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return target(x, a) < target(y, a); });
+    for (int rank = 0; rank < n; ++rank) strata_[c.inputs[a]][order[rank]] = rank;
+  }
 }
 
 std::vector<double> DesignTable::Values(int sample) const {
@@ -46,9 +73,10 @@ std::vector<double> DesignTable::Values(int sample) const {
     u.push_back(Uniform(spec_.seed, stream, sample, 0));
     if (spec_.design == Design::kLatinHypercube) u[k] = (strata_[k][sample] + u[k]) / spec_.samples;
   }
-  // Gaussian copula: the correlated inputs' normal scores mixed by the Cholesky factor
+  // Gaussian copula: the correlated inputs' normal scores mixed by the Cholesky factor (Latin
+  // hypercube: induced on the strata instead, so every input stays stratified)
   const Correlation& c = spec_.correlation;
-  if (!c.inputs.empty()) {
+  if (!c.inputs.empty() && spec_.design != Design::kLatinHypercube) {
     Eigen::VectorXd z(c.inputs.size());
     for (std::size_t a = 0; a < c.inputs.size(); ++a) z[a] = NormalQuantile(u[c.inputs[a]]);
     const Eigen::VectorXd mixed = c.cholesky * z;

@@ -9,7 +9,8 @@ namespace dymesh::ensemble {
 /// The samples' uniform numbers for a spec, one row per sample and one column per input: a pure
 /// function of (spec hash, seed, input name, sample index) for Monte Carlo; Latin hypercube
 /// stratifies each input into `samples` equal-probability strata visited in a permutation drawn
-/// from the same streams.
+/// from the same streams; correlated inputs are then re-paired (Iman-Conover) so that they keep
+/// their strata and carry the copula's rank correlation.
 class DesignTable {
  public:
   explicit DesignTable(const Spec& spec);
@@ -18,6 +19,7 @@ class DesignTable {
 
  private:
   std::vector<double> Deterministic(int sample) const;  // grid and one-at-a-time
+  void InduceRankCorrelation();                          // Latin hypercube with a correlation
   const Spec& spec_;
   std::vector<std::vector<int>> strata_;  // Latin hypercube: stratum of each sample, per input
 };
