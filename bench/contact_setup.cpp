@@ -117,10 +117,10 @@ BodyMemory MeasureBodyMemory(const BodyModel& model) {
             model.mesh.vertices.size() * sizeof(Vec3);  // the engine's pending crush of a simultaneous pass pair
   // Embree: scene, BVH and buffers allocated through a monitored device, plus the locator's own copies
   std::atomic<long long> embree_bytes{0};
-  auto device = std::make_shared<const EmbreeDevice>();
+  auto device = std::make_shared<const accel::EmbreeDevice>();
   rtcSetDeviceMemoryMonitorFunction(static_cast<RTCDevice>(device->handle()), CountBytes, &embree_bytes);
   {
-    EmbreeLocator locator(device, model.mesh);
+    accel::EmbreeLocator locator(device, model.mesh);
     m.embree = static_cast<size_t>(embree_bytes.load()) + model.mesh.triangles.size() * sizeof(std::array<int, 3>) +
                (model.mesh.vertices.size() + 1 + 3 * model.mesh.triangles.size()) * sizeof(int);
   }

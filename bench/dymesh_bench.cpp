@@ -46,8 +46,8 @@ double Seconds(std::chrono::steady_clock::duration d) { return std::chrono::dura
 struct Fixture {
   ContactSetup setup;
   RaySet rays;
-  std::shared_ptr<const EmbreeDevice> device;
-  std::unique_ptr<EmbreeLocator> embree;
+  std::shared_ptr<const accel::EmbreeDevice> device;
+  std::unique_ptr<accel::EmbreeLocator> embree;
   double raw_rate = 0.0;  // [segments/s] raw Embree on these rays, measured once
 };
 
@@ -59,8 +59,8 @@ const Fixture& GetFixture(const Rung& rung) {
     TriMesh mesh = LoadDataMesh(rung.file, rung.subdivisions);
     slot->setup = PlaceInContact(mesh, mesh, kPenetration, kSpeed);
     slot->rays = PassRays(slot->setup, ContactOptions{});
-    slot->device = std::make_shared<const EmbreeDevice>();
-    slot->embree = std::make_unique<EmbreeLocator>(slot->device, slot->setup.master->mesh);
+    slot->device = std::make_shared<const accel::EmbreeDevice>();
+    slot->embree = std::make_unique<accel::EmbreeLocator>(slot->device, slot->setup.master->mesh);
     // the baseline of every ratio: raw rtcIntersect1 on the same scene and rays, best of three
     for (int k = 0; k < 3; ++k) {
       const auto t0 = std::chrono::steady_clock::now();
@@ -103,7 +103,7 @@ void BM_LocateNeighborBox(benchmark::State& state) {
   const Fixture& f = GetFixture(kLadder[state.range(0)]);
   const RaySet rays = SampleRays(f.rays, 4000);
   ContactOptions options;
-  NeighborBoxLocator boxes(f.setup.master->mesh, options);
+  accel::NeighborBoxLocator boxes(f.setup.master->mesh, options);
   size_t located = 0;
   int step = 0;
   for (auto _ : state) located = LocateWithNeighborBox(&boxes, step++, rays, options.search_backoff);
@@ -158,13 +158,13 @@ void BM_RefitVersusRebuild(benchmark::State& state) {
       moved.push_back(static_cast<int>(v));
     }
   }
-  EmbreeLocator locator(f.device, f.setup.master->mesh);
+  accel::EmbreeLocator locator(f.device, f.setup.master->mesh);
   for (auto _ : state) {
     if (state.range(1) == 0) {
       locator.Update(crushed, moved);
       locator.Commit();
     } else {
-      EmbreeLocator fresh(f.device, f.setup.master->mesh);
+      accel::EmbreeLocator fresh(f.device, f.setup.master->mesh);
       benchmark::DoNotOptimize(fresh.scene());
     }
   }

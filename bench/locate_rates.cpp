@@ -25,7 +25,7 @@ bool AnyExact(const TriMesh& mesh, const std::vector<Vec3>& normals, const std::
 
 }  // namespace
 
-size_t LocateWithEmbreeLocator(const EmbreeLocator& locator, const TriMesh& master,
+size_t LocateWithEmbreeLocator(const accel::EmbreeLocator& locator, const TriMesh& master,
                                const std::vector<Vec3>& normals, const RaySet& rays) {
   size_t located = 0;
   std::vector<Candidate> tris;
@@ -57,11 +57,11 @@ size_t RawClosestHits(void* scene, const RaySet& rays, size_t begin, size_t end)
   return located;
 }
 
-size_t LocateWithRawEmbree(const EmbreeLocator& locator, const RaySet& rays) {
+size_t LocateWithRawEmbree(const accel::EmbreeLocator& locator, const RaySet& rays) {
   return RawClosestHits(locator.scene(), rays, 0, rays.size());
 }
 
-size_t LocateWithNeighborBox(NeighborBoxLocator* locator, int step, const RaySet& rays, double backoff) {
+size_t LocateWithNeighborBox(accel::NeighborBoxLocator* locator, int step, const RaySet& rays, double backoff) {
   // lists prepared for every node (rebuilt on the locator's own schedule), then queried
   std::vector<int> keys(rays.size());
   for (size_t i = 0; i < keys.size(); ++i) keys[i] = static_cast<int>(i);
@@ -77,7 +77,7 @@ size_t LocateWithNeighborBox(NeighborBoxLocator* locator, int step, const RaySet
 }
 
 size_t LocateWithBruteForce(const TriMesh& master, const RaySet& rays) {
-  BruteForceLocator brute(master);
+  accel::BruteForceLocator brute(master);
   size_t located = 0;
   std::vector<Candidate> tris;
   for (size_t i = 0; i < rays.size(); ++i) {

@@ -20,7 +20,7 @@ double Seconds(std::chrono::steady_clock::duration d) { return std::chrono::dura
 // an Embree locator that can record the segments it is asked for, to replay them as raw rays
 class RecordingLocator final : public Locator {
  public:
-  RecordingLocator(std::shared_ptr<const EmbreeDevice> device, const TriMesh& mesh) : inner_(std::move(device), mesh) {}
+  RecordingLocator(std::shared_ptr<const accel::EmbreeDevice> device, const TriMesh& mesh) : inner_(std::move(device), mesh) {}
   void Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) override {
     inner_.Update(vertices, moved);
   }
@@ -63,7 +63,7 @@ class RecordingLocator final : public Locator {
     Vec3 o, d;
     double length;
   };
-  EmbreeLocator inner_;
+  accel::EmbreeLocator inner_;
   bool recording_ = false;
   mutable tbb::enumerable_thread_specific<std::vector<Segment>> segments_;
 };
@@ -72,7 +72,7 @@ class RecordingLocator final : public Locator {
 
 StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int steps) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-  auto device = std::make_shared<const EmbreeDevice>();
+  auto device = std::make_shared<const accel::EmbreeDevice>();
   std::vector<RecordingLocator*> recorders;
   const LocatorFactory factory = [&](const TriMesh& mesh) {
     auto locator = std::make_unique<RecordingLocator>(device, mesh);

@@ -48,13 +48,13 @@ int RunBench(const BenchRequest& request) {
     return 2;
   }
   // locate rates on the same segments (one thread each)
-  auto device = std::make_shared<const EmbreeDevice>();
-  const EmbreeLocator embree(device, master);
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  const accel::EmbreeLocator embree(device, master);
   const BodyState rest = MakeBodyState(*setup.master, RigidState{});
   const double raw = Rate(rays.size(), [&] { bench::LocateWithRawEmbree(embree, rays); });
   const double engine = Rate(rays.size(), [&] { bench::LocateWithEmbreeLocator(embree, master, rest.tri_normal, rays); });
   const bench::RaySet sample = bench::SampleRays(rays, kNeighborBoxSample);
-  NeighborBoxLocator boxes(master, options);
+  accel::NeighborBoxLocator boxes(master, options);
   int step = 0;
   const double neighbor = Rate(sample.size(), [&] {
     bench::LocateWithNeighborBox(&boxes, step, sample, options.search_backoff);

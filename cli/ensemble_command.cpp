@@ -106,7 +106,7 @@ int EnsembleReplayCommand(const std::string& spec_path, int samples, int index, 
   std::vector<std::string> names = OutputFileNames(scenario);
   names.push_back("record.json");
   OutputFolder folder(out_dir, names);
-  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
   sim.Run();
   folder.ReplacePreviousRun();
   WriteOutputs(sim, Summarize(sim), out_dir);

@@ -69,9 +69,9 @@ int ExitCodeOf(const Summary& s) {
 
 // the search the user chose; all give the same results, at different speeds
 LocatorFactory MakeLocatorFactory(const std::string& name, const ContactOptions& options) {
-  if (name == "neighbor_box") return MakeNeighborBoxLocatorFactory(options);
-  if (name == "brute_force") return MakeBruteForceLocatorFactory();
-  return MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>());
+  if (name == "neighbor_box") return accel::MakeNeighborBoxLocatorFactory(options);
+  if (name == "brute_force") return accel::MakeBruteForceLocatorFactory();
+  return accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>());
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 
 #include "dymesh/core/geometry.h"
 
-namespace dymesh {
+namespace dymesh::accel {
 
 BruteForceLocator::BruteForceLocator(const TriMesh& mesh) : triangles_(mesh.triangles), vertices_(mesh.vertices) {}
 
@@ -41,4 +41,4 @@ LocatorFactory MakeBruteForceLocatorFactory() {
   return [](const TriMesh& mesh) { return std::make_unique<BruteForceLocator>(mesh); };
 }
 
-}  // namespace dymesh
+}  // namespace dymesh::accel

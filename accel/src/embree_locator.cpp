@@ -8,7 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace dymesh {
+namespace dymesh::accel {
 namespace {
 
 // a hit this many inflations away from every edge of its triangle is inside the double triangle
@@ -270,4 +270,4 @@ LocatorFactory MakeEmbreeLocatorFactory(std::shared_ptr<const EmbreeDevice> devi
   return [device](const TriMesh& mesh) { return std::make_unique<EmbreeLocator>(device, mesh); };
 }
 
-}  // namespace dymesh
+}  // namespace dymesh::accel

@@ -7,7 +7,7 @@
 #include "dymesh/core/parallel.h"
 #include "dymesh/core/units.h"
 
-namespace dymesh {
+namespace dymesh::accel {
 namespace {
 
 // SetBoxSize: the box is this fraction of the body's largest extent, with at least this much slack
@@ -155,4 +155,4 @@ LocatorFactory MakeNeighborBoxLocatorFactory(const ContactOptions& options) {
   return [options](const TriMesh& mesh) { return std::make_unique<NeighborBoxLocator>(mesh, options); };
 }
 
-}  // namespace dymesh
+}  // namespace dymesh::accel

@@ -38,7 +38,7 @@ class Run {
  public:
   explicit Run(const dymesh::Scenario& scenario)
       : sim_(scenario, dymesh::BuildBodyModels(scenario),
-             dymesh::MakeEmbreeLocatorFactory(std::make_shared<const dymesh::EmbreeDevice>())) {}
+             dymesh::accel::MakeEmbreeLocatorFactory(std::make_shared<const dymesh::accel::EmbreeDevice>())) {}
 
   dymesh::Simulation& sim() { return sim_; }
   const dymesh::Simulation& sim() const { return sim_; }

@@ -131,7 +131,7 @@ std::vector<RigidState> States(const dm_world* w, const dm_body_state* states, i
 }
 
 dymesh::LocatorFactory Locators() {
-  return dymesh::MakeEmbreeLocatorFactory(std::make_shared<const dymesh::EmbreeDevice>());
+  return dymesh::accel::MakeEmbreeLocatorFactory(std::make_shared<const dymesh::accel::EmbreeDevice>());
 }
 
 // ---- worlds from arrays -----------------------------------------------------------------------

@@ -48,7 +48,7 @@ Json RecordHead(const Spec& spec, int index, const std::vector<double>& values) 
 
 }  // namespace
 
-SharedAssets::SharedAssets() : device_(std::make_shared<const EmbreeDevice>()) {}
+SharedAssets::SharedAssets() : device_(std::make_shared<const accel::EmbreeDevice>()) {}
 
 TriMesh SharedAssets::Get(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
   // the key: everything BuildBodyMesh reads
@@ -103,7 +103,7 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
     const auto models = BuildBodyModels(scenario, [&](const MeshSource& source, const std::string& field) {
       return meshes->Get(source, scenario.file, field);
     });
-    Simulation sim(scenario, models, MakeEmbreeLocatorFactory(meshes->device()));
+    Simulation sim(scenario, models, accel::MakeEmbreeLocatorFactory(meshes->device()));
     sim.Run();
     const Summary s = Summarize(sim);
     const OutputUnits u = UnitsOf(scenario.units);

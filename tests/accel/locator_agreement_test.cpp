@@ -30,9 +30,9 @@ TriMesh CarMesh() {
 
 TEST(LocatorAgreement, EmbreeFindsEveryTriangleTheOracleFinds) {
   const TriMesh mesh = CarMesh();
-  auto device = std::make_shared<const EmbreeDevice>();
-  EmbreeLocator embree(device, mesh);
-  BruteForceLocator brute(mesh);
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  accel::EmbreeLocator embree(device, mesh);
+  accel::BruteForceLocator brute(mesh);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> box(-2.5, 2.5), unit(-1.0, 1.0);
   int hits = 0;
@@ -62,7 +62,7 @@ void ExpectSameContact(SearchDirection method, StopRule rule) {
   ContactOptions options;
   options.search_direction = method;
   options.stop_rule = rule;
-  auto device = std::make_shared<const EmbreeDevice>();
+  auto device = std::make_shared<const accel::EmbreeDevice>();
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> jitter(-1.0, 1.0);
   for (int trial = 0; trial < 5; ++trial) {
@@ -71,9 +71,9 @@ void ExpectSameContact(SearchDirection method, StopRule rule) {
     b.position = Vec3(0.3 * jitter(rng), -3.07 + 0.05 * jitter(rng), 0.02 * jitter(rng));
     b.yaw = 1.5708 + 0.15 * jitter(rng);
     b.velocity = Vec3(0.0, 10.0, 0.0);
-    ContactEngine with_embree({model, model}, {a, b}, options, MakeEmbreeLocatorFactory(device));
-    ContactEngine with_boxes({model, model}, {a, b}, options, MakeNeighborBoxLocatorFactory(options));
-    ContactEngine with_oracle({model, model}, {a, b}, options, MakeBruteForceLocatorFactory());
+    ContactEngine with_embree({model, model}, {a, b}, options, accel::MakeEmbreeLocatorFactory(device));
+    ContactEngine with_boxes({model, model}, {a, b}, options, accel::MakeNeighborBoxLocatorFactory(options));
+    ContactEngine with_oracle({model, model}, {a, b}, options, accel::MakeBruteForceLocatorFactory());
     for (int step = 0; step < 3; ++step) {
       const StepResult fast = with_embree.Step(1e-3);
       const StepResult boxes = with_boxes.Step(1e-3);
@@ -102,9 +102,9 @@ TEST(LocatorAgreement, WholeRunIdenticalForAllLocators) {
   for (BodySpec& b : scenario.bodies) b.mesh.file = std::string(DYMESH_DATA_DIR) + "/meshes/torcs_p406-lod3.obj";
   scenario.duration = 0.02;
   scenario.contact.calc_nabor_interval = 5;  // lists reused across steps, as DyMESH did
-  auto device = std::make_shared<const EmbreeDevice>();
-  const LocatorFactory factories[] = {MakeBruteForceLocatorFactory(), MakeEmbreeLocatorFactory(device),
-                                      MakeNeighborBoxLocatorFactory(scenario.contact)};
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  const LocatorFactory factories[] = {accel::MakeBruteForceLocatorFactory(), accel::MakeEmbreeLocatorFactory(device),
+                                      accel::MakeNeighborBoxLocatorFactory(scenario.contact)};
   std::vector<std::string> summaries;
   std::vector<std::vector<Vec3>> crush;
   for (const LocatorFactory& factory : factories) {

@@ -14,11 +14,11 @@ namespace {
 
 // a run of the box barrier scenario (stopped after `steps` steps when given)
 struct FinishedRun {
-  std::shared_ptr<const EmbreeDevice> device = std::make_shared<const EmbreeDevice>();
+  std::shared_ptr<const accel::EmbreeDevice> device = std::make_shared<const accel::EmbreeDevice>();
   Simulation sim;
   Summary summary;
   explicit FinishedRun(const Scenario& s, int steps = 1 << 30)
-      : sim(s, BuildBodyModels(s), MakeEmbreeLocatorFactory(device)) {
+      : sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device)) {
     sim.Run([&](double) { return sim.steps() < steps; });
     summary = Summarize(sim);
   }

@@ -24,8 +24,8 @@ namespace fs = std::filesystem;
 class BarrierRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    device_ = std::make_shared<const EmbreeDevice>();
-    sim_ = std::make_unique<Simulation>(testing::BarrierScenario(30.0, 0.0, 0.0005), BuildBodyModels(testing::BarrierScenario(30.0, 0.0, 0.0005)), MakeEmbreeLocatorFactory(device_));
+    device_ = std::make_shared<const accel::EmbreeDevice>();
+    sim_ = std::make_unique<Simulation>(testing::BarrierScenario(30.0, 0.0, 0.0005), BuildBodyModels(testing::BarrierScenario(30.0, 0.0, 0.0005)), accel::MakeEmbreeLocatorFactory(device_));
     sim_->Run();
     summary_ = std::make_unique<Summary>(Summarize(*sim_));
   }
@@ -47,7 +47,7 @@ class BarrierRun : public ::testing::Test {
     return ss.str();
   }
 
-  static inline std::shared_ptr<const EmbreeDevice> device_;
+  static inline std::shared_ptr<const accel::EmbreeDevice> device_;
   static inline std::unique_ptr<Simulation> sim_;
   static inline std::unique_ptr<Summary> summary_;
   fs::path dir_;

@@ -27,7 +27,7 @@ TEST(RunAssessment, NonFiniteMotionStopsTheRunAndMarksItFailed) {
   models[0] = std::make_shared<const BodyModel>(MakeBodyModel(car.name, car.mesh, car.stiffness,
                                                               std::numeric_limits<double>::denorm_min(), car.inertia,
                                                               car.restitution, car.friction, car.rigid));
-  Simulation sim(s, models, MakeBruteForceLocatorFactory());
+  Simulation sim(s, models, accel::MakeBruteForceLocatorFactory());
   EXPECT_TRUE(sim.Run());
   EXPECT_TRUE(sim.failed_numerics());
   EXPECT_LT(sim.time(), s.duration);
@@ -51,7 +51,7 @@ TEST(RunAssessment, OverflowingResultsAreFailedAndStillNumbers) {
   const BodyModel& car = *models[0];
   models[0] = std::make_shared<const BodyModel>(MakeBodyModel(car.name, car.mesh, car.stiffness, 1e-300, car.inertia,
                                                               car.restitution, car.friction, car.rigid));
-  Simulation sim(s, models, MakeBruteForceLocatorFactory());
+  Simulation sim(s, models, accel::MakeBruteForceLocatorFactory());
   sim.Run();
   const Summary summary = Summarize(sim);
   EXPECT_EQ(summary.status, RunStatus::kFailedNumerics);
@@ -66,7 +66,7 @@ TEST(RunAssessment, CrushDeeperThanTheBodyIsLongIsWarned) {
   s.bodies[0] = testing::BoxVehicle("slab", 4, 66, 30, {1, 22, 10}, 3000, 300, 100, 30, 0.1);
   s.bodies[0].initial.velocity = Vec3(30.0 * units::kMph, 0, 0);
   s.bodies[0].initial.position = Vec3(88.0, 0, 0) * units::kInch;  // front 0.5 in from the wall
-  Simulation sim(s, BuildBodyModels(s), MakeBruteForceLocatorFactory());
+  Simulation sim(s, BuildBodyModels(s), accel::MakeBruteForceLocatorFactory());
   sim.Run();
   const Summary summary = Summarize(sim);
   ASSERT_GT(summary.bodies[0].max_crush, 4.0 * units::kInch);  // past its length

@@ -106,8 +106,8 @@ Json LoadSchema() {
 
 // runs a scenario (up to `max_steps` steps, then stopped) and returns the summary.json it writes
 Json RunAndReadSummary(const Scenario& scenario, int max_steps, const std::string& name) {
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run([&](double) { return sim.steps() < max_steps; });
   const fs::path dir = fs::temp_directory_path() / ("dymesh_schema_test_" + name);
   WriteOutputs(sim, Summarize(sim), dir.string());

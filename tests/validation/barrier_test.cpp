@@ -27,8 +27,8 @@ double ClosedFormCrushIn(double weight_lb, double speed_mph, double width_in, do
 }
 
 Summary RunBarrier(double restitution, double time_step) {
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(testing::BarrierScenario(30.0, restitution, time_step), BuildBodyModels(testing::BarrierScenario(30.0, restitution, time_step)), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(testing::BarrierScenario(30.0, restitution, time_step), BuildBodyModels(testing::BarrierScenario(30.0, restitution, time_step)), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   return Summarize(sim);
 }

@@ -30,9 +30,9 @@ struct Outcome {
 Outcome Run(Scenario s, bool swap, std::vector<std::shared_ptr<const BodyModel>> models = {}) {
   if (swap) std::swap(s.bodies[0], s.bodies[1]);
   if (swap && !models.empty()) std::swap(models[0], models[1]);
-  auto device = std::make_shared<const EmbreeDevice>();
+  auto device = std::make_shared<const accel::EmbreeDevice>();
   if (models.empty()) models = BuildBodyModels(s);
-  Simulation sim(s, models, MakeEmbreeLocatorFactory(device));
+  Simulation sim(s, models, accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary sum = Summarize(sim);
   Outcome o;

@@ -61,8 +61,8 @@ struct RunRecord {
 
 RunRecord RunWithThreads(const Scenario& scenario, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   RunRecord r;
   r.summary = SummaryJson(Summarize(sim), scenario, {});

@@ -65,8 +65,8 @@ ClosedForm ImpulseMomentum(const Scenario& s) {
 void ExpectClosedForm(SearchDirection direction, StopRule stop, double time_step, double frame_angle,
                       const char* label) {
   const Scenario scenario = EccentricScenario(direction, stop, time_step, frame_angle);
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary s = Summarize(sim);
   const ClosedForm expected = ImpulseMomentum(scenario);

@@ -30,8 +30,8 @@ double AngularMomentumZ(const Simulation& sim, const Sample& sample) {
 }
 
 void ExpectLedgerBalances(const Scenario& scenario, const std::string& label) {
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary s = Summarize(sim);
   const double lost = s.kinetic_before - s.kinetic_after;
@@ -69,8 +69,8 @@ TEST(EnergyLedger, ObliqueAndOffset) {
 TEST(EnergyLedger, PoleDemos) {
   // a rigid pole: fixed bodies take no momentum, so only the energy is checked there
   for (const char* name : {"pole.json", "pole_offset.json"}) {
-    auto device = std::make_shared<const EmbreeDevice>();
-    Simulation sim(Demo(name), BuildBodyModels(Demo(name)), MakeEmbreeLocatorFactory(device));
+    auto device = std::make_shared<const accel::EmbreeDevice>();
+    Simulation sim(Demo(name), BuildBodyModels(Demo(name)), accel::MakeEmbreeLocatorFactory(device));
     sim.Run();
     const Summary s = Summarize(sim);
     const double lost = s.kinetic_before - s.kinetic_after;

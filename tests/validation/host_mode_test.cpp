@@ -33,10 +33,10 @@ TEST(HostMode, SameRunAsTheEnginesOwnHost) {
   Scenario s = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/car_to_car_side.json");
   s.stop_at_separation = false;  // the host decides when to stop: the full duration in both
   const auto models = BuildBodyModels(s);
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation own(s, models, MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation own(s, models, accel::MakeEmbreeLocatorFactory(device));
   own.Run();
-  Simulation hosted(s, models, MakeEmbreeLocatorFactory(device));
+  Simulation hosted(s, models, accel::MakeEmbreeLocatorFactory(device));
   RunAsHost(&hosted);
   ASSERT_EQ(hosted.history().size(), own.history().size());
   for (std::size_t k = 0; k < own.history().size(); ++k)
@@ -50,7 +50,7 @@ TEST(HostMode, SameRunAsTheEnginesOwnHost) {
 
 TEST(HostMode, RefusesWrongCountsNonFiniteStatesAndBadSteps) {
   Scenario s = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json");
-  Simulation sim(s, BuildBodyModels(s), MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
   std::vector<RigidState> states = {sim.engine().state(0).rigid, sim.engine().state(1).rigid};
   EXPECT_THROW(sim.HostStep({states[0]}, 0.0005), std::invalid_argument);
   EXPECT_THROW(sim.HostStep(states, 0.0), std::invalid_argument);
@@ -66,7 +66,7 @@ TEST(HostMode, RefusesWrongCountsNonFiniteStatesAndBadSteps) {
 TEST(HostMode, ContactEngineRefusesMismatchedPosesBadIndicesNonFiniteStatesAndBadSteps) {
   Scenario s = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json");
   const auto models = BuildBodyModels(s);
-  const auto factory = MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>());
+  const auto factory = accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>());
   EXPECT_THROW(ContactEngine(models, {s.bodies[0].initial}, s.contact, factory), std::invalid_argument);
   RigidState nan_pose = s.bodies[0].initial;
   nan_pose.yaw = std::nan("");

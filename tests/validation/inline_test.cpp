@@ -33,8 +33,8 @@ Scenario InlineScenario(double restitution) {
 }
 
 Summary RunInline(double restitution) {
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(InlineScenario(restitution), BuildBodyModels(InlineScenario(restitution)), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(InlineScenario(restitution), BuildBodyModels(InlineScenario(restitution)), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   return Summarize(sim);
 }
@@ -72,8 +72,8 @@ TEST(Inline, ThreeBodiesInAChainShareOneMomentum) {
   BodySpec last = testing::BoxVehicle("last", 170, 66, 30, {1, 20, 10}, 3500, 300, 100, 30, 0.1);
   last.initial.position = Vec3(90.0 + 0.5 + 190.0 + 0.5 + 85.0, 0, 0) * u::kInch;
   s.bodies.push_back(last);
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(s, BuildBodyModels(s), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary sum = Summarize(sim);
   const double p0 = 3000 * u::kPoundMass * 30 * u::kMph;

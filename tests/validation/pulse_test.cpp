@@ -16,8 +16,8 @@ namespace {
 
 // resultant collision force on body 0 per step [N]
 std::vector<double> ForceSeries(const Scenario& scenario) {
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   std::vector<double> f;
   for (const Sample& s : sim.history()) f.push_back(s.bodies[0].loads.force_earth.norm());

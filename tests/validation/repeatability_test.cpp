@@ -14,9 +14,9 @@ namespace {
 TEST(Repeatability, SameScenarioTwiceIsBitIdentical) {
   Scenario scenario = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/car_to_car_side.json");
   scenario.duration = 0.08;
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation first(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
-  Simulation second(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation first(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
+  Simulation second(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   first.Run();
   second.Run();
   ASSERT_EQ(first.history().size(), second.history().size());

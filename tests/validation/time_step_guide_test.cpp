@@ -49,7 +49,7 @@ TEST(TimeStepGuide, SimulatedLoadingLastsAQuarterOfTheSpringPeriod) {
   // the box reaches its deepest crush (zero velocity) after pi / (2 omega): the simulated spring
   // is the guide's spring; 1 % covers the half-step of the detection and the slight tilt of nodes
   const Scenario s = LinearSpringBox(0.0001);
-  Simulation sim(s, BuildBodyModels(s), MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
   double stop_time = -1.0;
   sim.Run([&](double t) {
     if (stop_time < 0.0 && sim.engine().state(0).rigid.velocity.x() <= 0.0) stop_time = t;
@@ -61,7 +61,7 @@ TEST(TimeStepGuide, SimulatedLoadingLastsAQuarterOfTheSpringPeriod) {
 
 // barrier delta-V of the spec §4 box at `step`
 double BarrierDeltaV(double step) {
-  Simulation sim(testing::BarrierScenario(30.0, 0.1, step), BuildBodyModels(testing::BarrierScenario(30.0, 0.1, step)), MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+  Simulation sim(testing::BarrierScenario(30.0, 0.1, step), BuildBodyModels(testing::BarrierScenario(30.0, 0.1, step)), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
   sim.Run();
   return Summarize(sim).bodies[0].delta_v;
 }
@@ -75,7 +75,7 @@ TEST(TimeStepGuide, RecommendedStepResolvesDeltaVToOnePercentAndCoarseStepsAreWa
   // the 10 ms step: fewer than 50 steps per contact, a delta-V error beyond 1 %, a warning
   Scenario coarse = s;
   coarse.time_step = 0.01;
-  Simulation sim(coarse, BuildBodyModels(coarse), MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+  Simulation sim(coarse, BuildBodyModels(coarse), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
   sim.Run();
   const Summary summary = Summarize(sim);
   EXPECT_GT(std::abs(summary.bodies[0].delta_v - reference), 0.01 * reference);
@@ -92,13 +92,13 @@ TEST(TimeStepGuide, StepBeyondTheStableLimitIsRefused) {
   s.time_step = 2.01 / SpringOmega();
   s.duration = 10 * s.time_step;
   try {
-    Simulation sim(s, BuildBodyModels(s), MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+    Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
     FAIL() << "accepted an unstable step";
   } catch (const InputError& e) {
     EXPECT_EQ(e.field(), "time.step");
   }
   s.time_step = 1.99 / SpringOmega();
-  EXPECT_NO_THROW(Simulation(s, BuildBodyModels(s), MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>())));
+  EXPECT_NO_THROW(Simulation(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>())));
 }
 
 }  // namespace

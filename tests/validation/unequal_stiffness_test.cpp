@@ -47,8 +47,8 @@ struct Crush {
 };
 
 Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
-  auto device = std::make_shared<const EmbreeDevice>();
-  Simulation sim(scenario, BuildBodyModels(scenario), MakeEmbreeLocatorFactory(device));
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
   const Summary s = Summarize(sim);
   Crush c{};

@@ -31,7 +31,7 @@ int main() {
   s.bodies[1].rigid = true;
   s.bodies[1].motion = MotionModel::kFixed;
   s.bodies[1].initial.position = Vec3(110.5 * in, 0, 0);
-  Simulation sim(s, {car, wall}, MakeEmbreeLocatorFactory(std::make_shared<const EmbreeDevice>()));
+  Simulation sim(s, {car, wall}, accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
   sim.Run();
   const double dv = std::abs(sim.engine().state(0).rigid.velocity.x() - 30 * units::kMph) / units::kMph;
   std::printf("delta-V %.2f mph after %d steps\n", dv, sim.steps());

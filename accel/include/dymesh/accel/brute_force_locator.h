@@ -2,7 +2,7 @@
 #include "dymesh/core/locator.h"
 
 /// The correctness oracle: every master triangle tested in double precision, O(N * M).
-namespace dymesh {
+namespace dymesh::accel {
 
 /// Tests every triangle exactly (segment-plane crossing plus the cross-product inside test).
 class BruteForceLocator final : public Locator {
@@ -21,4 +21,4 @@ class BruteForceLocator final : public Locator {
 /// Factory for the contact engine.
 LocatorFactory MakeBruteForceLocatorFactory();
 
-}  // namespace dymesh
+}  // namespace dymesh::accel

@@ -6,7 +6,7 @@
 #include "dymesh/core/locator.h"
 
 /// Embree BVH search: one scene per body in body-fixed coordinates, refit after crush.
-namespace dymesh {
+namespace dymesh::accel {
 
 /// An Embree device shared read-only by every locator of a process (ISA pinned at creation).
 class EmbreeDevice {
@@ -78,4 +78,4 @@ class EmbreeLocator final : public Locator {
 /// Factory for the contact engine; all locators share one device.
 LocatorFactory MakeEmbreeLocatorFactory(std::shared_ptr<const EmbreeDevice> device);
 
-}  // namespace dymesh
+}  // namespace dymesh::accel

@@ -8,7 +8,7 @@
 /// The original DyMESH search, kept as the historic baseline: a search box around each slave vertex
 /// (GLOBAL_SEARCH_BOX) and per-vertex neighbour-surface lists (NaborSurf) recomputed every
 /// CALC_NABOR_INTERVAL steps.
-namespace dymesh {
+namespace dymesh::accel {
 
 /// Neighbour-box search. Each announced slave vertex keeps the list of master triangles whose
 /// bounds meet its search box; a query tests that list exactly. Lists are rebuilt every
@@ -59,4 +59,4 @@ class NeighborBoxLocator final : public Locator {
 /// Factory for the contact engine.
 LocatorFactory MakeNeighborBoxLocatorFactory(const ContactOptions& options);
 
-}  // namespace dymesh
+}  // namespace dymesh::accel

@@ -19,10 +19,10 @@ class SharedAssets {
  public:
   SharedAssets();
   TriMesh Get(const MeshSource& source, const std::string& scenario_file, const std::string& field);
-  const std::shared_ptr<const EmbreeDevice>& device() const { return device_; }
+  const std::shared_ptr<const accel::EmbreeDevice>& device() const { return device_; }
 
  private:
-  std::shared_ptr<const EmbreeDevice> device_;
+  std::shared_ptr<const accel::EmbreeDevice> device_;
   std::mutex mutex_;
   std::map<std::string, std::shared_ptr<const TriMesh>> meshes_;
 };
