@@ -37,6 +37,7 @@ struct EnsembleRequest {
   int threads = 0;     ///< worker threads (0: all cores)
   int samples = 0;     ///< 0: the spec's own count
   std::string shard;   ///< "K/N": run every N-th sample from the K-th (1-based); empty: all
+  double sample_time_limit = 0.0;  ///< [s] wall clock per sample (0: none)
   bool quiet = false;
 };
 

@@ -72,6 +72,7 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
   const ensemble::Spec spec = LoadRequestedSpec(request.spec_path, request.samples);
   ensemble::RunOptions options;
   options.out_dir = request.out_dir;
+  options.sample_time_limit = request.sample_time_limit;
   ParseShard(request.shard, &options.shard, &options.shards);
   std::optional<tbb::global_control> thread_limit;
   if (request.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, request.threads);

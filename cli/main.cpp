@@ -106,6 +106,9 @@ int main(int argc, char** argv) {
   ensemble->add_option("--threads", ens.threads, "worker threads (default: all cores); results are identical")->check(kThreadCount);
   ensemble->add_option("--samples", ens.samples, "number of samples (default: the spec's)")->check(CLI::Range(1, 10000000));
   ensemble->add_option("--shard", ens.shard, "K/N: run every N-th sample from the K-th (Slurm arrays, GNU parallel)");
+  ensemble->add_option("--sample-time-limit", ens.sample_time_limit,
+                       "seconds (wall clock) a sample may run; over it the sample is recorded as timed_out and a resume runs it again")
+      ->check(CLI::PositiveNumber);
   ensemble->add_flag("-q,--quiet", ens.quiet, "no progress lines");
   int replay_index = -1;
   std::string replay_spec, replay_out = "replay", merge_spec, merge_out = "ensemble";

@@ -48,7 +48,11 @@ void ReadRecords(const Spec& spec, const fs::path& file, std::map<int, SampleRec
     if (line.empty()) continue;
     SampleRecord r;
     if (ParseRecord(spec, line, &r)) {
-      if (r.index >= 0 && r.index < spec.samples) records->emplace(r.index, r);
+      // a later record of a sample replaces one that timed out (a resume ran it again)
+      if (r.index >= 0 && r.index < spec.samples) {
+        const auto [it, fresh] = records->emplace(r.index, r);
+        if (!fresh && it->second.status == kTimedOut) it->second = r;
+      }
       continue;
     }
     // a whole line of another spec: the folder is someone else's
@@ -118,6 +122,8 @@ class Collector {
     // what the folder already holds (a finished run, or the journal of a stopped one)
     ReadRecords(spec, dir_ / kSamplesName, &records_);
     ReadRecords(spec, dir_ / kJournalName, &records_);
+    // a sample that ran over the time limit runs again (the limit is the machine's, not the spec's)
+    for (auto it = records_.begin(); it != records_.end();) it = it->second.status == kTimedOut ? records_.erase(it) : std::next(it);
     for (int i = options.shard - 1; i < spec.samples; i += options.shards) {
       ++counts_.total;
       if (records_.count(i)) ++counts_.resumed;
@@ -242,7 +248,7 @@ RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
         if (options.stop && options.stop()) return;
-        collector.Add(RunSample(spec, todo[k], design.Values(todo[k]), &meshes).line);
+        collector.Add(RunSample(spec, todo[k], design.Values(todo[k]), &meshes, options.sample_time_limit).line);
       }
     });
     if (options.stop && options.stop()) break;
@@ -261,7 +267,7 @@ constexpr int kTagRequest = 1, kTagChunk = 2, kTagRecord = 3;
 constexpr int kChunk = 2;  // samples handed out at a time
 
 // a worker: asks for chunks, runs them, returns each record, until an empty chunk
-void MpiWorker(const Spec& spec) {
+void MpiWorker(const Spec& spec, double time_limit) {
   const DesignTable design(spec);
   SharedAssets meshes;
   for (;;) {
@@ -273,7 +279,7 @@ void MpiWorker(const Spec& spec) {
     MPI_Get_count(&status, MPI_INT, &n);
     if (n == 0) return;
     for (int k = 0; k < n; ++k) {
-      const std::string line = RunSample(spec, chunk[k], design.Values(chunk[k]), &meshes).line;
+      const std::string line = RunSample(spec, chunk[k], design.Values(chunk[k]), &meshes, time_limit).line;
       MPI_Send(line.data(), static_cast<int>(line.size()), MPI_CHAR, 0, kTagRecord, MPI_COMM_WORLD);
     }
   }
@@ -346,7 +352,7 @@ RunCounts MpiMaster(const Spec& spec, const RunOptions& options, int size) {
 RunCounts RunEnsembleMpi(const Spec& spec, const RunOptions& options, int rank, int size) {
   if (size <= 1) return RunEnsemble(spec, options);
   if (rank != 0) {
-    MpiWorker(spec);
+    MpiWorker(spec, options.sample_time_limit);
     return RunCounts{};
   }
   return MpiMaster(spec, options, size);

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
 
 #include "dymesh/accel/embree_locator.h"
@@ -94,7 +95,9 @@ Scenario SampleScenario(const Spec& spec, const std::vector<double>& values) {
   return ParseScenario(j.dump(), spec.scenario_file);
 }
 
-SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes) {
+SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes,
+                       double time_limit) {
+  const auto start = std::chrono::steady_clock::now();
   SampleRecord r;
   r.index = index;
   Json record = RecordHead(spec, index, values);
@@ -104,7 +107,19 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
       return meshes->Get(source, scenario.file, field);
     });
     Simulation sim(scenario, models, accel::MakeEmbreeLocatorFactory(meshes->device()));
-    sim.Run();
+    // the wall-clock limit, checked between steps
+    auto within_limit = [&](double) {
+      return !(time_limit > 0.0) ||
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <= time_limit;
+    };
+    if (!sim.Run(within_limit)) {
+      r.status = kTimedOut;
+      record["status"] = r.status;
+      record["message"] = "ran over the sample time limit of " + Json(time_limit).dump() + " s (wall clock) at " +
+                          Json(sim.time()).dump() + " s simulated";
+      r.line = record.dump();
+      return r;
+    }
     const Summary s = Summarize(sim);
     const OutputUnits u = UnitsOf(scenario.units);
     r.status = RunStatusName(s.status);

@@ -129,6 +129,28 @@ TEST_F(Ensemble, StopToleranceAcrossMpiRanksEndsWhereThreadsDo) {
 }
 #endif
 
+TEST_F(Ensemble, SamplesOverTheTimeLimitAreRecordedAndRunAgainOnResume) {
+  // a limit no sample can meet: every sample is a timed_out record (counted, excluded, the ensemble
+  // goes on); the same command without the limit then runs them again, to a fresh run's bytes
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 4);
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "fresh").string()}).exit_code, 0);
+  const fs::path out = dir_ / "limited";
+  const ProcessResult limited = Dymesh({"ensemble", spec, "--quiet", "--sample-time-limit", "1e-6", "--out", out.string()});
+  ASSERT_EQ(limited.exit_code, 0) << limited.err;
+  EXPECT_NE(limited.out.find("4 not complete"), std::string::npos) << limited.out;
+  const std::string first = Line(out / "samples.jsonl", 0);
+  EXPECT_NE(first.find("\"status\":\"timed_out\""), std::string::npos) << first;
+  EXPECT_NE(first.find("ran over the sample time limit of 1e-06 s (wall clock)"), std::string::npos) << first;
+  EXPECT_NE(ReadFile(out / "report.html").find("timed_out"), std::string::npos);
+  const ProcessResult again = Dymesh({"ensemble", spec, "--quiet", "--out", out.string()});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("4 run now, 0 resumed, 0 not complete"), std::string::npos) << again.out;
+  EXPECT_EQ(ReadFile(out / "samples.jsonl"), ReadFile(dir_ / "fresh" / "samples.jsonl"));
+  EXPECT_EQ(ReadFile(out / "ensemble.json"), ReadFile(dir_ / "fresh" / "ensemble.json"));
+  // a limit that is not a positive number of seconds is refused before any sample
+  EXPECT_EQ(Dymesh({"ensemble", spec, "--sample-time-limit", "0", "--out", (dir_ / "zero").string()}).exit_code, 2);
+}
+
 TEST_F(Ensemble, KilledRunResumesToTheSameBytes) {
   const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 40);
   ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "whole").string()}).exit_code, 0);

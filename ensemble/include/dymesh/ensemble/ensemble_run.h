@@ -13,6 +13,7 @@ struct RunOptions {
   int shard = 1, shards = 1;           ///< this process runs the samples i with i % shards == shard - 1
   std::function<bool()> stop;          ///< asked before each sample: true stops (in-flight samples finish)
   std::function<void(int done, int total)> progress;  ///< after each sample
+  double sample_time_limit = 0.0;      ///< [s] wall clock per sample (0: none); over it: a kTimedOut record
 };
 
 struct RunCounts {

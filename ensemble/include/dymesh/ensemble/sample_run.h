@@ -47,9 +47,15 @@ Crash3Stiffness Crash3ToAB(const Crash3Preset& preset, double b0, double b1);
 /// The sample's scenario: the base with `values` at the inputs' paths (InputError when refused).
 Scenario SampleScenario(const Spec& spec, const std::vector<double>& values);
 
+/// Status of a sample that ran over its wall-clock time limit: the one record that depends on the
+/// machine, so a resumed ensemble runs it again.
+inline constexpr const char* kTimedOut = "timed_out";
+
 /// Runs sample `index` with `values` and makes its record; never throws for a bad sample (the
-/// record says why). `engine_version` is written into the record.
-SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes);
+/// record says why). `engine_version` is written into the record. With `time_limit` > 0 [s, wall
+/// clock], a sample still running after it stops between steps and is recorded as kTimedOut.
+SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes,
+                       double time_limit = 0.0);
 
 /// Reads a record line back (status, outputs); false when it is not a valid record of `spec`.
 bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out);
