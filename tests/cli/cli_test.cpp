@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "cli_fixture.h"
 #include "process.h"
 
 namespace dymesh {
@@ -33,26 +34,9 @@ Json BoxScenario() {
 }
 
 // a folder per test, removed afterwards
-class Cli : public ::testing::Test {
+class Cli : public testing::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("dymesh_cli_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
-  ProcessResult Dymesh(const std::vector<std::string>& args, double seconds = 120.0) const {
-    std::vector<std::string> argv = {DYMESH_CLI};
-    argv.insert(argv.end(), args.begin(), args.end());
-    return RunProcess(argv, dir_ / "process", seconds);
-  }
-
-  fs::path dir_;
+  Cli() : CliFixture("dymesh_cli_test_") {}
 };
 
 TEST_F(Cli, OutOfRangeValueExitsTwoNamingFileAndField) {

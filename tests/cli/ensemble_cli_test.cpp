@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "../ensemble/box_spec.h"
+#include "cli_fixture.h"
 #include "process.h"
 #include "xml_check.h"
 
@@ -19,19 +20,9 @@ using dymesh::testing::ProcessResult;
 using dymesh::testing::ReadFile;
 namespace fs = std::filesystem;
 
-class Ensemble : public ::testing::Test {
+class Ensemble : public dymesh::testing::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("dymesh_ensemble_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  ProcessResult Dymesh(const std::vector<std::string>& args) const {
-    std::vector<std::string> argv = {DYMESH_CLI};
-    argv.insert(argv.end(), args.begin(), args.end());
-    return dymesh::testing::RunProcess(argv, dir_ / "process", 300.0);
-  }
+  Ensemble() : CliFixture("dymesh_ensemble_test_") {}
   // line `index` of a samples.jsonl
   static std::string Line(const fs::path& file, int index) {
     std::istringstream in(ReadFile(file));
@@ -39,7 +30,6 @@ class Ensemble : public ::testing::Test {
     for (int i = 0; i <= index; ++i) std::getline(in, line);
     return line;
   }
-  fs::path dir_;
 };
 
 TEST_F(Ensemble, SameBytesAtOneAndTwoThreadsAndOrderedByIndex) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_fixture.h"
 #include "process.h"
 
 namespace dymesh {
@@ -62,17 +63,15 @@ constexpr const char* kEnsembleRenderCheck = R"(<script>
 </script>)";
 
 // a report made by the dymesh command, and Chromium to look at it
-class ReportInBrowser : public ::testing::Test {
+class ReportInBrowser : public testing::CliFixture {
  protected:
+  ReportInBrowser() : CliFixture("dymesh_browser_test_") {}
   void SetUp() override {
+    CliFixture::SetUp();
     chromium_ = testing::FindOnPath("chromium");
     if (chromium_.empty()) chromium_ = testing::FindOnPath("chromium-browser");
     ASSERT_FALSE(chromium_.empty()) << "chromium not found on PATH: scripts/setup.sh installs Debian's chromium";
-    dir_ = fs::temp_directory_path() / ("dymesh_browser_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   // runs a scenario of data/scenarios into dir_/out; returns report.html's path (the side demo
   // ends in contact: exit 4, README known limits)
@@ -106,7 +105,6 @@ class ReportInBrowser : public ::testing::Test {
   }
 
   std::string chromium_;
-  fs::path dir_;
   int runs_ = 0;
 };
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <thread>
 
+#include "cli_fixture.h"
 #include "process.h"
 
 namespace {
@@ -37,24 +38,9 @@ Json BoxScenario() {
     ]})");
 }
 
-class Trust : public ::testing::Test {
+class Trust : public dymesh::testing::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("dymesh_trust_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
-  ProcessResult Dymesh(const std::vector<std::string>& args, double seconds = 120.0) const {
-    std::vector<std::string> argv = {DYMESH_CLI};
-    argv.insert(argv.end(), args.begin(), args.end());
-    return RunProcess(argv, dir_ / "process", seconds);
-  }
+  Trust() : CliFixture("dymesh_trust_test_") {}
   // runs `j` into dir_/out
   ProcessResult Run(const Json& j, const std::string& name = "s.json") const {
     return Dymesh({"run", Write(name, j.dump()), "--quiet", "--out", (dir_ / "out").string()});
@@ -69,7 +55,6 @@ class Trust : public ::testing::Test {
   }
   bool Has(const std::string& text, const std::string& part) const { return text.find(part) != std::string::npos; }
 
-  fs::path dir_;
 };
 
 // ---- run status -------------------------------------------------------------------------------
