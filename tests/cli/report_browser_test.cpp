@@ -22,13 +22,15 @@ namespace fs = std::filesystem;
 using testing::ProcessResult;
 
 // measures every svg.plot after layout and writes "id width height shapes-with-area" lines into
-// the page (only in the test's copy: the report itself has no script)
-constexpr const char* kRenderCheck = R"(<script>
+// the page (only in the test's copy: the report itself has no script); `shapes` selects what counts
+// as drawn
+std::string RenderCheck(const std::string& shapes) {
+  return R"(<script>
 (function () {
   var lines = [];
   document.querySelectorAll('svg.plot').forEach(function (svg) {
     var box = svg.getBoundingClientRect(), drawn = 0;
-    svg.querySelectorAll('polyline, polygon').forEach(function (e) {
+    svg.querySelectorAll(')" + shapes + R"(').forEach(function (e) {
       var b = e.getBBox();
       if (b.width > 0 || b.height > 0) drawn++;
     });
@@ -41,26 +43,7 @@ constexpr const char* kRenderCheck = R"(<script>
   console.log('render-check done');
 })();
 </script>)";
-
-// the same for the ensemble report, whose scatter plots draw dots and whose tornado draws bars
-constexpr const char* kEnsembleRenderCheck = R"(<script>
-(function () {
-  var lines = [];
-  document.querySelectorAll('svg.plot').forEach(function (svg) {
-    var box = svg.getBoundingClientRect(), drawn = 0;
-    svg.querySelectorAll('polyline, polygon, circle, rect[height="16"]').forEach(function (e) {
-      var b = e.getBBox();
-      if (b.width > 0 || b.height > 0) drawn++;
-    });
-    lines.push(svg.id + ' ' + Math.round(box.width) + ' ' + Math.round(box.height) + ' ' + drawn);
-  });
-  var pre = document.createElement('pre');
-  pre.id = 'render-check';
-  pre.textContent = lines.join('\n');
-  document.body.appendChild(pre);
-  console.log('render-check done');
-})();
-</script>)";
+}
 
 // a report made by the dymesh command, and Chromium to look at it
 class ReportInBrowser : public testing::CliFixture {
@@ -133,7 +116,7 @@ TEST_F(ReportInBrowser, EveryPlotRendersWithSizeAndShapes) {
     std::string html = testing::ReadFile(MakeReport(scenario, exit_code));
     const std::size_t body_end = html.rfind("</body>");
     ASSERT_NE(body_end, std::string::npos);
-    html.insert(body_end, kRenderCheck);
+    html.insert(body_end, RenderCheck("polyline, polygon"));
     const fs::path page = dir_ / "check.html";
     std::ofstream(page) << html;
     const ProcessResult r = Chromium(page, {"--dump-dom"});
@@ -174,7 +157,7 @@ TEST_F(ReportInBrowser, EnsembleReportRendersEveryPlot) {
       dir_ / "dymesh");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   std::string html = testing::ReadFile(dir_ / "ens" / "out" / "report.html");
-  html.insert(html.rfind("</body>"), kEnsembleRenderCheck);
+  html.insert(html.rfind("</body>"), RenderCheck("polyline, polygon, circle, rect[height=\"16\"]"));  // dots and tornado bars too
   const fs::path page = dir_ / "ensemble.html";
   std::ofstream(page) << html;
   const ProcessResult r = Chromium(page, {"--dump-dom"});
