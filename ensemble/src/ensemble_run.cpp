@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <deque>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -308,10 +308,11 @@ RunCounts MpiMaster(const Spec& spec, const RunOptions& options, int size) {
       MPI_Recv(line.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagRecord, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       collector.Add(line);
       --outstanding;
-      continue;
+    } else {
+      MPI_Recv(nullptr, 0, MPI_INT, status.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      waiting.push_back(status.MPI_SOURCE);
     }
-    MPI_Recv(nullptr, 0, MPI_INT, status.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    waiting.push_back(status.MPI_SOURCE);
+    // answer the waiting ranks (a record may complete the checkpoint they wait on)
     while (!waiting.empty()) {
       const bool stop = done || (options.stop && options.stop());
       if (!stop && next < todo.size()) {
