@@ -3,6 +3,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cmath>
 #include <cstring>
@@ -99,6 +100,7 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   // shared float vertices, inflated; padded so the last vertex can be read with a 16-byte load
   vertex_buffer_.assign(3 * nv + 4, 0.0f);
   stamp_.assign(nv, 0);
+  LinkTwins(mesh.vertices);
   for (size_t v = 0; v < nv; ++v) InflateVertex(mesh.vertices, static_cast<int>(v));
   // barycentric margin of each triangle: kInsideMargin inflations over its smallest altitude
   edge_margin_.resize(nt);
@@ -153,15 +155,41 @@ EmbreeLocator::~EmbreeLocator() {
 
 void EmbreeLocator::InflateVertex(const std::vector<Vec3>& vertices, int v) {
   // the float surface sits `inflation_` outside the double one (along the vertex normal), so a
-  // segment through a silhouette edge in double still meets the float triangle
+  // segment through a silhouette edge in double still meets the float triangle. Vertices at one
+  // rest position (a display mesh's seams) share the normal of all their triangles, summed from the
+  // lowest index: they move alike and the float surface keeps no crack the double one does not have
   Vec3 normal = Vec3::Zero();
-  for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
-    const auto& t = triangles_[ring_.ids[k]];
-    normal += TriangleCross(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
-  }
+  int u = twin_first_[v];
+  do {
+    for (int k = ring_.offsets[u]; k < ring_.offsets[u + 1]; ++k) {
+      const auto& t = triangles_[ring_.ids[k]];
+      normal += TriangleCross(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
+    }
+    u = twin_next_[u];
+  } while (u != twin_first_[v]);
   const double len = normal.norm();
   const Vec3 p = len > 0.0 ? Vec3(vertices[v] + (inflation_ / len) * normal) : vertices[v];
   for (int k = 0; k < 3; ++k) vertex_buffer_[3 * v + k] = static_cast<float>(p[k]);
+}
+
+void EmbreeLocator::LinkTwins(const std::vector<Vec3>& vertices) {
+  // vertices at exactly one position: a cycle through them, and the lowest index of each
+  const int nv = static_cast<int>(vertices.size());
+  std::vector<int> order(nv);
+  for (int v = 0; v < nv; ++v) order[v] = v;
+  auto key = [&](int v) { return std::array<double, 3>{vertices[v].x(), vertices[v].y(), vertices[v].z()}; };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) != key(b) ? key(a) < key(b) : a < b; });
+  twin_next_.resize(nv);
+  twin_first_.resize(nv);
+  for (int i = 0; i < nv;) {
+    int j = i;
+    while (j < nv && key(order[j]) == key(order[i])) ++j;
+    for (int k = i; k < j; ++k) {
+      twin_first_[order[k]] = order[i];
+      twin_next_[order[k]] = order[k + 1 < j ? k + 1 : i];
+    }
+    i = j;
+  }
 }
 
 void EmbreeLocator::UpdateEdgeMargin(const std::vector<Vec3>& vertices, int t) {
@@ -181,10 +209,15 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
   for (int v : moved) {
     for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
       for (int corner : triangles_[ring_.ids[k]]) {
-        if (stamp_[corner] != update_count_) {
-          stamp_[corner] = update_count_;
-          affected.push_back(corner);
-        }
+        // the corner and the vertices at its rest position (they share its normal)
+        int u = corner;
+        do {
+          if (stamp_[u] != update_count_) {
+            stamp_[u] = update_count_;
+            affected.push_back(u);
+          }
+          u = twin_next_[u];
+        } while (u != corner);
       }
     }
   }

@@ -52,6 +52,30 @@ TEST(LocatorAgreement, EmbreeFindsEveryTriangleTheOracleFinds) {
   EXPECT_GT(hits, 100);  // the sample really crosses the surface
 }
 
+TEST(LocatorAgreement, EmbreeFindsTheSeamOfADisplayMesh) {
+  // a tent whose two roof faces meet at a ridge made of separate, coincident vertices (a display
+  // mesh's seam). Inflated along each face's own normal the float ridges part and a ray down the
+  // ridge slips between them; the oracle (edge-inclusive, double) finds the ridge triangles
+  TriMesh tent;
+  tent.vertices = {{0, 0, 1}, {1, 0, 1}, {0, -1, 0}, {1, -1, 0},   // face A with its own ridge
+                   {0, 0, 1}, {1, 0, 1}, {0, 1, 0}, {1, 1, 0}};    // face B with its own ridge
+  tent.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  accel::EmbreeLocator embree(device, tent);
+  accel::BruteForceLocator brute(tent);
+  for (int i = 1; i < 100; ++i) {
+    const Vec3 origin(i / 100.0, 0.0, 2.0), down(0, 0, -1);
+    std::vector<Candidate> exact, found;
+    brute.TrianglesAlongSegment(i, origin, down, 2.0, &exact);
+    embree.TrianglesAlongSegment(i, origin, down, 2.0, &found);
+    ASSERT_FALSE(exact.empty()) << i;
+    std::vector<int> fast;
+    for (const Candidate& c : found) fast.push_back(c.triangle);
+    std::sort(fast.begin(), fast.end());
+    for (const Candidate& c : exact) EXPECT_TRUE(std::binary_search(fast.begin(), fast.end(), c.triangle)) << "x = " << i / 100.0;
+  }
+}
+
 // same contact step with either locator, from random interpenetrating poses
 void ExpectSameContact(SearchDirection method, StopRule rule) {
   const TriMesh mesh = CarMesh();

@@ -58,6 +58,7 @@ class EmbreeLocator final : public Locator {
 
  private:
   void InflateVertex(const std::vector<Vec3>& vertices, int v);
+  void LinkTwins(const std::vector<Vec3>& vertices);
   void UpdateEdgeMargin(const std::vector<Vec3>& vertices, int t);
 
   std::shared_ptr<const EmbreeDevice> device_;
@@ -71,6 +72,8 @@ class EmbreeLocator final : public Locator {
   std::vector<int> group_triangles_;   // mesh triangles, group by group (n_triangles)
   std::vector<int> triangle_group_;    // group of each mesh triangle (n_triangles)
   std::vector<float> edge_margin_;     // barycentric margin of a sure inside hit (n_triangles)
+  std::vector<int> twin_next_;         // next vertex at the same rest position, a cycle (n_vertices)
+  std::vector<int> twin_first_;        // lowest index at the same rest position (n_vertices)
   std::vector<int> stamp_;             // scratch marks for Update (n_vertices)
   int update_count_ = 0;
   bool uncommitted_ = false;           // groups refit since the last scene commit
