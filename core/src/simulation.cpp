@@ -7,10 +7,6 @@
 #include "dymesh/core/placement.h"
 
 namespace dymesh {
-namespace {
-
-
-}  // namespace
 
 Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
                        const LocatorFactory& make_locator)

@@ -7,6 +7,15 @@
 #include "dymesh/ensemble/sobol_sequence.h"
 
 namespace dymesh::ensemble {
+namespace {
+
+// the draws of an input's stream (random_stream.h): one number per (sample or row, draw)
+constexpr std::uint32_t kValueDraw = 0;        // Monte Carlo value; the place inside an LHS stratum; Saltelli's A
+constexpr std::uint32_t kStratumKeyDraw = 1;   // LHS: the key that orders the samples into strata
+constexpr std::uint32_t kSaltelliBDraw = 2;    // Saltelli's B
+constexpr std::uint32_t kSobolSeedDraw = 3;    // Sobol': the scramble seed (row 0 only)
+
+}  // namespace
 
 DesignTable::DesignTable(const Spec& spec) : spec_(spec) {
   if (spec.design != Design::kLatinHypercube) return;
@@ -14,7 +23,7 @@ DesignTable::DesignTable(const Spec& spec) : spec_(spec) {
   for (const Input& in : spec.inputs) {
     const std::uint64_t stream = TextHash(in.name);
     std::vector<std::pair<double, int>> keys(spec.samples);
-    for (int j = 0; j < spec.samples; ++j) keys[j] = {Uniform(spec.seed, stream, j, 1), j};
+    for (int j = 0; j < spec.samples; ++j) keys[j] = {Uniform(spec.seed, stream, j, kStratumKeyDraw), j};
     std::sort(keys.begin(), keys.end());
     std::vector<int> stratum(spec.samples);
     for (int rank = 0; rank < spec.samples; ++rank) stratum[keys[rank].second] = rank;
@@ -61,16 +70,16 @@ std::vector<double> DesignTable::Values(int sample) const {
       // row j of A (draw 0) or of B (draw 2); AB_i takes input i from B
       const int j = sample / group, m = sample % group;
       const bool from_b = m == 1 || m == 2 + static_cast<int>(k);
-      u.push_back(Uniform(spec_.seed, stream, j, from_b ? 2 : 0));
+      u.push_back(Uniform(spec_.seed, stream, j, from_b ? kSaltelliBDraw : kValueDraw));
       continue;
     }
     if (spec_.design == Design::kSobol) {
       // the input's dimension, Owen-scrambled by a random 32-bit seed of its own stream
-      const auto seed = static_cast<std::uint32_t>(Uniform(spec_.seed, stream, 0, 3) * 4294967296.0);
+      const auto seed = static_cast<std::uint32_t>(Uniform(spec_.seed, stream, 0, kSobolSeedDraw) * 4294967296.0);
       u.push_back(ScrambledSobolCoordinate(static_cast<std::uint64_t>(sample), static_cast<int>(k), seed));
       continue;
     }
-    u.push_back(Uniform(spec_.seed, stream, sample, 0));
+    u.push_back(Uniform(spec_.seed, stream, sample, kValueDraw));
     if (spec_.design == Design::kLatinHypercube) u[k] = (strata_[k][sample] + u[k]) / spec_.samples;
   }
   // Gaussian copula: the correlated inputs' normal scores mixed by the Cholesky factor (Latin

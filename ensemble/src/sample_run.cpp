@@ -21,7 +21,7 @@ using Json = nlohmann::json;
 void AddOutputs(const BodySummary& b, const OutputUnits& u, std::map<std::string, double>* out) {
   (*out)[b.name + ".delta_v"] = b.delta_v * u.speed;
   (*out)[b.name + ".pdof_deg"] = b.pdof_deg;
-  (*out)[b.name + ".peak_acceleration_g"] = b.peak_accel / 9.80665;
+  (*out)[b.name + ".peak_acceleration_g"] = b.peak_accel / units::kStandardGravity;
   (*out)[b.name + ".max_crush"] = b.max_crush * u.length;
   (*out)[b.name + ".crush_energy"] = b.crush_energy * u.energy;
 }
@@ -33,8 +33,8 @@ Json BodyJson(const BodySummary& b, const RigidState& final_state, const OutputU
   Json c = Json::array();
   for (double x : b.crush_profile.crush) c.push_back(x * u.length);
   return {{"name", b.name}, {"delta_v", b.delta_v * u.speed}, {"delta_v_earth", Vector(b.delta_v_earth, u.speed)},
-          {"pdof_deg", b.pdof_deg}, {"peak_acceleration_g", b.peak_accel / 9.80665},
-          {"average_acceleration_g", b.average_accel / 9.80665}, {"max_crush", b.max_crush * u.length},
+          {"pdof_deg", b.pdof_deg}, {"peak_acceleration_g", b.peak_accel / units::kStandardGravity},
+          {"average_acceleration_g", b.average_accel / units::kStandardGravity}, {"max_crush", b.max_crush * u.length},
           {"crush_energy", b.crush_energy * u.energy}, {"c", c},
           {"final_position", Vector(final_state.position, u.length)},
           {"final_heading_deg", final_state.yaw * kRadToDeg}, {"final_velocity", Vector(final_state.velocity, u.speed)}};
@@ -45,6 +45,29 @@ Json RecordHead(const Spec& spec, int index, const std::vector<double>& values) 
   Json inputs = Json::object();
   for (std::size_t k = 0; k < spec.inputs.size(); ++k) inputs[spec.inputs[k].name] = values[k];
   return {{"index", index}, {"spec_hash", HashText(spec.hash)}, {"engine_version", kEngineVersion}, {"inputs", inputs}};
+}
+
+// a run that ended: its status, warnings, energy balance and bodies; its outputs when complete
+void RecordRun(const Simulation& sim, const Scenario& scenario, SampleRecord* r, Json* record) {
+  const Summary s = Summarize(sim);
+  const OutputUnits u = UnitsOf(scenario.units);
+  r->status = RunStatusName(s.status);
+  Json warnings = Json::array();
+  for (const RunWarning& w : s.warnings) warnings.push_back(w.code);
+  (*record)["status"] = r->status;
+  (*record)["warnings"] = warnings;
+  (*record)["energy_balance_error"] = std::isfinite(s.energy_balance_error) ? s.energy_balance_error : 0.0;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i)
+    (*record)["bodies"].push_back(BodyJson(s.bodies[i], sim.engine().state(static_cast<int>(i)).rigid, u));
+  if (s.status == RunStatus::kComplete)
+    for (const BodySummary& b : s.bodies) AddOutputs(b, u, &r->outputs);
+}
+
+// a sample that has no results: its status and why
+void RecordNotRun(const std::string& status, const std::string& why, SampleRecord* r, Json* record) {
+  r->status = status;
+  (*record)["status"] = status;
+  (*record)["message"] = why;
 }
 
 }  // namespace
@@ -112,31 +135,15 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
       return !(time_limit > 0.0) ||
              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <= time_limit;
     };
-    if (!sim.Run(within_limit)) {
-      r.status = kTimedOut;
-      record["status"] = r.status;
-      record["message"] = "ran over the sample time limit of " + Json(time_limit).dump() + " s (wall clock) at " +
-                          Json(sim.time()).dump() + " s simulated";
-      r.line = record.dump();
-      return r;
+    if (sim.Run(within_limit)) {
+      RecordRun(sim, scenario, &r, &record);
+    } else {
+      RecordNotRun(kTimedOut, "ran over the sample time limit of " + Json(time_limit).dump() + " s (wall clock) at " +
+                                  Json(sim.time()).dump() + " s simulated", &r, &record);
     }
-    const Summary s = Summarize(sim);
-    const OutputUnits u = UnitsOf(scenario.units);
-    r.status = RunStatusName(s.status);
-    Json warnings = Json::array();
-    for (const RunWarning& w : s.warnings) warnings.push_back(w.code);
-    record["status"] = r.status;
-    record["warnings"] = warnings;
-    record["energy_balance_error"] = std::isfinite(s.energy_balance_error) ? s.energy_balance_error : 0.0;
-    for (std::size_t i = 0; i < s.bodies.size(); ++i)
-      record["bodies"].push_back(BodyJson(s.bodies[i], sim.engine().state(static_cast<int>(i)).rigid, u));
-    if (s.status == RunStatus::kComplete)
-      for (const BodySummary& b : s.bodies) AddOutputs(b, u, &r.outputs);
   } catch (const std::exception& e) {
     // a refused sample is a record with its reason, never the end of the ensemble
-    r.status = "failed_input";
-    record["status"] = r.status;
-    record["message"] = e.what();
+    RecordNotRun("failed_input", e.what(), &r, &record);
   }
   r.line = record.dump();
   return r;

@@ -348,7 +348,8 @@ Spec LoadSpec(const std::string& path) {
   if (j.contains("stop_tolerance")) {
     const Json& t = j["stop_tolerance"];
     spec.stop_relative = r.Number(r.Require(t, "stop_tolerance", "relative"), "stop_tolerance.relative");
-    const double m = t.contains("min_samples") ? r.Number(t["min_samples"], "stop_tolerance.min_samples") : 50;
+    const double m = t.contains("min_samples") ? r.Number(t["min_samples"], "stop_tolerance.min_samples")
+                                               : kDefaultStopMinSamples;
     if (!(spec.stop_relative > 0.0 && spec.stop_relative < 1.0)) r.Fail("stop_tolerance.relative", "expected a value in (0, 1)");
     if (m < 2 || std::floor(m) != m) r.Fail("stop_tolerance.min_samples", "expected an integer >= 2");
     spec.stop_min_samples = static_cast<int>(m);

@@ -23,6 +23,33 @@ namespace fs = std::filesystem;
 class Ensemble : public dymesh::testing::CliFixture {
  protected:
   Ensemble() : CliFixture("dymesh_ensemble_test_") {}
+  // the box spec with a loose 10 % stop tolerance: checkpoints at 8, 16, 32, 64 samples
+  std::string WriteStopToleranceSpec() const {
+    const std::string path = dymesh::testing::WriteBoxSpec(dir_, 64, "monte_carlo");
+    std::string text = ReadFile(path);
+    text.insert(text.rfind('}'), R"(, "stop_tolerance": {"relative": 0.1, "min_samples": 8})");
+    std::ofstream(path) << text;
+    return path;
+  }
+#ifdef DYMESH_MPIEXEC
+  // `spec` under mpirun at each rank count: samples.jsonl, ensemble.json and report.html byte for
+  // byte those in `reference`
+  void ExpectSameBytesOnRanks(const std::string& spec, const std::vector<const char*>& ranks,
+                              const fs::path& reference) const {
+    // OpenMPI refuses root unless told; CI runs as root
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    for (const char* n : ranks) {
+      const fs::path out = dir_ / (std::string("ranks") + n);
+      const ProcessResult r = dymesh::testing::RunProcess(
+          {DYMESH_MPIEXEC, "--oversubscribe", "-np", n, DYMESH_CLI, "ensemble", spec, "--quiet", "--out", out.string()},
+          dir_ / "process", 300.0);
+      ASSERT_EQ(r.exit_code, 0) << n << " ranks\n" << r.err;
+      for (const char* name : {"samples.jsonl", "ensemble.json", "report.html"})
+        EXPECT_EQ(ReadFile(out / name), ReadFile(reference / name)) << n << " ranks: " << name;
+    }
+  }
+#endif
   // line `index` of a samples.jsonl
   static std::string Line(const fs::path& file, int index) {
     std::istringstream in(ReadFile(file));
@@ -79,43 +106,19 @@ TEST_F(Ensemble, ThreeShardsMergedEqualOneRun) {
 
 #ifdef DYMESH_MPIEXEC
 TEST_F(Ensemble, OneTwoAndThreeMpiRanksGiveTheSameBytes) {
-  // OpenMPI refuses root unless told; CI runs as root
-  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 11);
   ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "plain").string()}).exit_code, 0);
-  for (const char* ranks : {"1", "2", "3"}) {
-    const fs::path out = dir_ / (std::string("ranks") + ranks);
-    const ProcessResult r = dymesh::testing::RunProcess(
-        {DYMESH_MPIEXEC, "--oversubscribe", "-np", ranks, DYMESH_CLI, "ensemble", spec, "--quiet", "--out", out.string()},
-        dir_ / "process", 300.0);
-    ASSERT_EQ(r.exit_code, 0) << ranks << " ranks\n" << r.err;
-    for (const char* name : {"samples.jsonl", "ensemble.json", "report.html"})
-      EXPECT_EQ(ReadFile(out / name), ReadFile(dir_ / "plain" / name)) << ranks << " ranks: " << name;
-  }
+  ExpectSameBytesOnRanks(spec, {"1", "2", "3"}, dir_ / "plain");
 }
 
 TEST_F(Ensemble, StopToleranceAcrossMpiRanksEndsWhereThreadsDo) {
   // the master judges each checkpoint once all its records are in: the same samples and bytes as a
   // threaded run, at 2 and 3 ranks
-  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  std::string path = dymesh::testing::WriteBoxSpec(dir_, 64, "monte_carlo");
-  std::string text = ReadFile(path);
-  text.insert(text.rfind('}'), R"(, "stop_tolerance": {"relative": 0.1, "min_samples": 8})");
-  std::ofstream(path) << text;
+  const std::string path = WriteStopToleranceSpec();
   ASSERT_EQ(Dymesh({"ensemble", path, "--quiet", "--out", (dir_ / "threads").string()}).exit_code, 0);
   const std::string lines = ReadFile(dir_ / "threads" / "samples.jsonl");
   ASSERT_LT(std::count(lines.begin(), lines.end(), '\n'), 64);
-  for (const char* ranks : {"2", "3"}) {
-    const fs::path out = dir_ / (std::string("ranks") + ranks);
-    const ProcessResult r = dymesh::testing::RunProcess(
-        {DYMESH_MPIEXEC, "--oversubscribe", "-np", ranks, DYMESH_CLI, "ensemble", path, "--quiet", "--out", out.string()},
-        dir_ / "process", 300.0);
-    ASSERT_EQ(r.exit_code, 0) << ranks << " ranks\n" << r.err;
-    for (const char* name : {"samples.jsonl", "ensemble.json", "report.html"})
-      EXPECT_EQ(ReadFile(out / name), ReadFile(dir_ / "threads" / name)) << ranks << " ranks: " << name;
-  }
+  ExpectSameBytesOnRanks(path, {"2", "3"}, dir_ / "threads");
 }
 #endif
 
@@ -220,10 +223,7 @@ TEST_F(Ensemble, EvidenceGivesThePosteriorOfTheImpactSpeed) {
 
 TEST_F(Ensemble, StopToleranceEndsAtASettledCheckpointTheSameAtAnyThreadCount) {
   // checkpoints at 8, 16, 32, 64 samples; a loose 10 % tolerance settles before 64
-  std::string path = dymesh::testing::WriteBoxSpec(dir_, 64, "monte_carlo");
-  std::string text = ReadFile(path);
-  text.insert(text.rfind('}'), R"(, "stop_tolerance": {"relative": 0.1, "min_samples": 8})");
-  std::ofstream(path) << text;
+  const std::string path = WriteStopToleranceSpec();
   for (const char* threads : {"1", "2"})
     ASSERT_EQ(Dymesh({"ensemble", path, "--quiet", "--threads", threads, "--out", (dir_ / threads).string()}).exit_code, 0);
   const nlohmann::json stats = nlohmann::json::parse(ReadFile(dir_ / "1" / "ensemble.json"));

@@ -21,6 +21,9 @@ namespace dymesh::ensemble {
 /// kSobol: the Owen-scrambled Sobol' sequence (one dimension per input, in input order).
 enum class Design { kMonteCarlo, kLatinHypercube, kSaltelli, kGrid, kOneAtATime, kTable, kSobol };
 
+/// The first checkpoint of a stop tolerance when the spec gives no `min_samples`.
+inline constexpr int kDefaultStopMinSamples = 50;
+
 struct Input {
   std::string name;
   std::string path;      ///< JSON path into the scenario, e.g. bodies[0].initial.speed
