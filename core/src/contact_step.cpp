@@ -112,6 +112,7 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   // one state, one locator and one bounds box per body; one touching list pair per body pair
   for (int i = 0; i < n; ++i) {
     states_.push_back(MakeBodyState(*models_[i], initial[i]));
+    motions_.push_back(MotionModel::kFree6Dof);
     locators_.push_back(make_locator(models_[i]->mesh));
   }
   bounds_min_.resize(n);
@@ -177,6 +178,13 @@ void ContactEngine::SetRigidState(int i, const RigidState& rigid) {
   states_[i].rigid = rigid;
 }
 
+void ContactEngine::SetMotion(int i, MotionModel motion) {
+  if (i < 0 || i >= body_count())
+    throw std::invalid_argument("SetMotion: body " + std::to_string(i) + " is out of range 0.." +
+                                std::to_string(body_count() - 1));
+  motions_[i] = motion;
+}
+
 StepResult ContactEngine::Step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw std::invalid_argument("Step: dt must be finite and > 0");
   FloatModeScope float_mode;
@@ -216,6 +224,7 @@ StepResult ContactEngine::Step(double dt) {
         if (pass < passes) run(pass, step_index_ % 2 == 0 ? b : a, false);
       }
       result.pairs.push_back(CombinePasses(a, b, sums));
+      LimitFrictionToStick(dt, &result.pairs.back());
     }
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
@@ -257,15 +266,16 @@ void ContactEngine::AccountWork() {
     }
     // each side's share: a rigid side takes none; two deformable sides share the crush work as their
     // node laws did over the step, and the friction work evenly (heat at the common interface)
-    const bool rigid0 = models_[p.body[0]]->rigid, rigid1 = models_[p.body[1]]->rigid;
+    // (each share from its own side's numbers, so listing the bodies the other way round books the same bits)
+    const bool rigid[2] = {models_[p.body[0]]->rigid, models_[p.body[1]]->rigid};
     const double e0 = p.law_energy[0], e1 = p.law_energy[1];
-    double crush0 = rigid0 ? 0.0 : rigid1 ? 1.0 : 0.5;
-    if (!rigid0 && !rigid1 && e0 * e1 >= 0.0 && e0 + e1 != 0.0) crush0 = e0 / (e0 + e1);
-    const double friction0 = rigid0 ? 0.0 : rigid1 ? 1.0 : 0.5;
-    states_[p.body[0]].crush_energy += crush0 * normal;
-    states_[p.body[1]].crush_energy += (1.0 - crush0) * normal;
-    states_[p.body[0]].friction_energy += friction0 * friction;
-    states_[p.body[1]].friction_energy += (1.0 - friction0) * friction;
+    const bool by_law = !rigid[0] && !rigid[1] && e0 * e1 >= 0.0 && e0 + e1 != 0.0;
+    for (int k = 0; k < 2; ++k) {
+      const double even = rigid[k] ? 0.0 : rigid[1 - k] ? 1.0 : 0.5;
+      const double crush = by_law ? p.law_energy[k] / (e0 + e1) : even;
+      states_[p.body[k]].crush_energy += crush * normal;
+      states_[p.body[k]].friction_energy += even * friction;
+    }
   }
   unbooked_.clear();
 }
@@ -428,6 +438,27 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
     out.friction_moment[km] += w * p.friction.moment_master;
   }
   return out;
+}
+
+void ContactEngine::LimitFrictionToStick(double dt, PairLoads* p) const {
+  // spec §7 friction is Coulomb's: mu N while sliding, but never more than stops the slide within
+  // the step (mu N held over a whole step can reverse a slow slide: friction pushing the bodies the
+  // other way). The friction wrench's power on the step-start motion, against the power it adds to
+  // it over dt (the bodies' inverse masses as the host moves them), gives the largest scale that
+  // brings the motion it opposes to rest and not beyond
+  double power = 0.0, gain = 0.0;  // [W]
+  for (int k = 0; k < 2; ++k) {
+    const int body = p->body[k];
+    const RigidState& r = states_[body].rigid;
+    power += p->friction_force[k].dot(r.velocity) + p->friction_moment[k].dot(r.Rotation() * r.omega);
+    gain += dt * LoadPowerGain(*models_[body], motions_[body], r, p->friction_force[k], p->friction_moment[k]);
+  }
+  if (power >= 0.0 || gain <= -power) return;  // sliding on through the step: mu N throughout
+  const double scale = -power / gain;
+  for (int k = 0; k < 2; ++k) {
+    p->friction_force[k] *= scale;
+    p->friction_moment[k] *= scale;
+  }
 }
 
 bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p,

@@ -52,6 +52,19 @@ void IntegrateRigidBody(const BodyModel& model, MotionModel motion, const Vec3& 
   s->yaw += rates.z() * dt;
 }
 
+double LoadPowerGain(const BodyModel& model, MotionModel motion, const RigidState& state, const Vec3& force_earth,
+                     const Vec3& moment_earth) {
+  // the accelerations IntegrateRigidBody gives this load (without the gyroscopic term)
+  if (motion == MotionModel::kFixed || model.mass <= 0.0) return 0.0;
+  if (motion == MotionModel::kPlanar) {
+    return (force_earth.x() * force_earth.x() + force_earth.y() * force_earth.y()) / model.mass +
+           moment_earth.z() * moment_earth.z() / model.inertia(2, 2);
+  }
+  const Mat3 r = state.Rotation();
+  const Vec3 w_dot = model.inertia.ldlt().solve(r.transpose() * moment_earth);
+  return force_earth.squaredNorm() / model.mass + moment_earth.dot(r * w_dot);
+}
+
 double KineticEnergy(const BodyModel& model, const RigidState& s) {
   return 0.5 * model.mass * s.velocity.squaredNorm() + 0.5 * s.omega.dot(model.inertia * s.omega);
 }

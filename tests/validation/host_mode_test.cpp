@@ -75,6 +75,8 @@ TEST(HostMode, ContactEngineRefusesMismatchedPosesBadIndicesNonFiniteStatesAndBa
   EXPECT_THROW(engine.SetRigidState(2, s.bodies[0].initial), std::invalid_argument);
   EXPECT_THROW(engine.SetRigidState(-1, s.bodies[0].initial), std::invalid_argument);
   EXPECT_THROW(engine.SetRigidState(0, nan_pose), std::invalid_argument);
+  EXPECT_THROW(engine.SetMotion(2, MotionModel::kPlanar), std::invalid_argument);
+  EXPECT_THROW(engine.SetMotion(-1, MotionModel::kFixed), std::invalid_argument);
   EXPECT_THROW(engine.Step(0.0), std::invalid_argument);
   EXPECT_THROW(engine.Step(-0.001), std::invalid_argument);
   EXPECT_NO_THROW(engine.Step(0.0005));

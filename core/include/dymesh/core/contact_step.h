@@ -6,6 +6,7 @@
 #include "dymesh/core/body.h"
 #include "dymesh/core/locator.h"
 #include "dymesh/core/options.h"
+#include "dymesh/core/rigid_body.h"
 
 /// The DyMESH contact step (spec §2, §3, §5, §6, §7, §8): Location, Restoration, node forces,
 /// friction and sums to each CG, for every pair of bodies whose bounds overlap.
@@ -66,6 +67,11 @@ class ContactEngine {
   /// Throws std::invalid_argument for an index out of range or a non-finite state.
   void SetRigidState(int i, const RigidState& rigid);
 
+  /// Host input: how the host moves body i (default: free 6-DOF; a body without mass is held
+  /// fixed). Friction uses it to stop, not reverse, a slide within a step (spec §7).
+  /// Throws std::invalid_argument for an index out of range.
+  void SetMotion(int i, MotionModel motion);
+
   /// Energy ledger (LS-DYNA-style contact energy): books the work that the last step's contact loads
   /// did on the motion the host integrated, at the mean of the velocities before and after the step
   /// (exact for the semi-implicit Euler host), into each body's crush and friction energy. Call once
@@ -116,6 +122,7 @@ class ContactEngine {
   // writes slave node v's own state (through RestoreNode), its contact normal and its pending Delta
   // (f.pending[v]); nothing of any other node (the parallel loop relies on it), sums into *out
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out);
+  void LimitFrictionToStick(double dt, PairLoads* pair) const;
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
   bool LocateNode(const PassFrame& f, int v, bool was_touching, std::vector<Candidate>* scratch, Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
@@ -132,6 +139,7 @@ class ContactEngine {
 
   std::vector<std::shared_ptr<const BodyModel>> models_;
   std::vector<BodyState> states_;
+  std::vector<MotionModel> motions_;  // how the host moves each body
   std::vector<std::unique_ptr<Locator>> locators_;
   std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame box holding every vertex so far, per body
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
