@@ -76,6 +76,7 @@ struct ContactEngine::PassFrame {
   Vec3 t_slave_to_master;   // slave CG in the master frame
   std::vector<Vec3>* pending;  // [m] the slave's new Delta of the nodes that moved (n_vertices)
   double mu;                // contact friction coefficient of the pair
+  bool held;                // friction left the pair's slide under the null band in the last step
 
   Vec3 ToMaster(const Vec3& p_slave) const { return r_slave_to_master * p_slave + t_slave_to_master; }
 
@@ -121,6 +122,7 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   chunk_max_.resize(n);
   for (int i = 0; i < n; ++i) InitBounds(i);
   touching_.resize(static_cast<size_t>(n) * n);
+  held_.assign(static_cast<size_t>(n) * n, 0);
   pending_delta_.resize(n);
   moved_.resize(n);
   for (int i = 0; i < n; ++i) pending_delta_[i].resize(models_[i]->mesh.vertices.size());
@@ -194,15 +196,18 @@ StepResult ContactEngine::Step(double dt) {
   // every pair whose bounds overlap, in index order (determinism: fixed pair order)
   for (int a = 0; a < n; ++a) {
     for (int b = a + 1; b < n; ++b) {
-      if (models_[a]->rigid && models_[b]->rigid) continue;
-      if (!BoundsOverlap(a, b)) continue;
+      char& held = held_[static_cast<size_t>(a) * n + b];
+      if ((models_[a]->rigid && models_[b]->rigid) || !BoundsOverlap(a, b)) {
+        held = 0;
+        continue;
+      }
       ++result.diagnostics.pairs_in_contact;
       auto& touching = touching_[static_cast<size_t>(a) * n + b];
       const int passes = options_.passes_per_step;
       std::vector<PassSums> sums(passes);
       auto run = [&](int pass, int master, bool stage) {
         const int slave = master == a ? b : a;
-        sums[pass] = RunPass(master, slave, stage, &touching[slave == a ? 0 : 1], dt, &result.diagnostics);
+        sums[pass] = RunPass(master, slave, stage, held != 0, &touching[slave == a ? 0 : 1], dt, &result.diagnostics);
       };
       if (models_[a]->rigid || models_[b]->rigid) {
         // a rigid body is always the master and takes none of the crush
@@ -224,7 +229,7 @@ StepResult ContactEngine::Step(double dt) {
         if (pass < passes) run(pass, step_index_ % 2 == 0 ? b : a, false);
       }
       result.pairs.push_back(CombinePasses(a, b, sums));
-      LimitFrictionToStick(dt, &result.pairs.back());
+      held = LimitFrictionToStick(dt, &result.pairs.back()) ? 1 : 0;
     }
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
@@ -340,21 +345,23 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   const Vec3 normal_earth = f.r_master * hit.normal;
   out->sums.normal.Add(node_force * normal_earth, arm_slave, arm_master);
   // spec §7 SlaveNodeFriction: against the sliding on the master surface, mu times the normal force,
-  // none inside the friction null band
+  // none inside the friction null band while the pair slides; once friction has brought the slide
+  // under the band (or stopped it: static friction) it also holds the slower slip there, until it
+  // no longer can
   const Vec3 v_rel = f.r_master * hit.rel_velocity;
   const Vec3 v_slide = v_rel - v_rel.dot(normal_earth) * normal_earth;
   const double slide = v_slide.norm();
-  if (f.mu > 0.0 && slide > options_.friction_null_band) {
+  if (f.mu > 0.0 && (slide > options_.friction_null_band || (f.held && slide > 0.0))) {
     out->sums.friction.Add(-(f.mu * node_force / slide) * v_slide, arm_slave, arm_master);
   }
 }
 
-ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage, std::vector<int>* touching,
-                                              double dt, ContactDiagnostics* diag) {
+ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage, bool held,
+                                              std::vector<int>* touching, double dt, ContactDiagnostics* diag) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
               Mat3::Identity(), Vec3::Zero(), &pending_delta_[slave],
-              0.5 * (models_[master]->friction + models_[slave]->friction)};
+              0.5 * (models_[master]->friction + models_[slave]->friction), held};
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
 
@@ -440,7 +447,7 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
   return out;
 }
 
-void ContactEngine::LimitFrictionToStick(double dt, PairLoads* p) const {
+bool ContactEngine::LimitFrictionToStick(double dt, PairLoads* p) const {
   // spec §7 friction is Coulomb's: mu N while sliding, but never more than stops the slide within
   // the step (mu N held over a whole step can reverse a slow slide: friction pushing the bodies the
   // other way). The friction wrench's power on the step-start motion, against the power it adds to
@@ -453,12 +460,27 @@ void ContactEngine::LimitFrictionToStick(double dt, PairLoads* p) const {
     power += p->friction_force[k].dot(r.velocity) + p->friction_moment[k].dot(r.Rotation() * r.omega);
     gain += dt * LoadPowerGain(*models_[body], motions_[body], r, p->friction_force[k], p->friction_moment[k]);
   }
-  if (power >= 0.0 || gain <= -power) return;  // sliding on through the step: mu N throughout
+  if (power >= 0.0) {
+    // friction that would drive the bodies' relative motion, not resist it (held slips too slow to
+    // point one way): none
+    for (int k = 0; k < 2; ++k) {
+      p->friction_force[k] = Vec3::Zero();
+      p->friction_moment[k] = Vec3::Zero();
+    }
+    return false;
+  }
+  if (gain <= -power) {
+    // sliding on through the step, mu N throughout; the slide it leaves, as a friction-weighted speed
+    // [m/s], is held below the null band in the next step too
+    const double force = p->friction_force[0].norm();
+    return force > 0.0 && (-power - gain) / force < options_.friction_null_band;
+  }
   const double scale = -power / gain;
   for (int k = 0; k < 2; ++k) {
     p->friction_force[k] *= scale;
     p->friction_moment[k] *= scale;
   }
+  return true;
 }
 
 bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p,

@@ -116,13 +116,14 @@ class ContactEngine {
       moved.clear();
     }
   };
-  PassSums RunPass(int master, int slave, bool stage, std::vector<int>* touching, double dt,
+  PassSums RunPass(int master, int slave, bool stage, bool held, std::vector<int>* touching, double dt,
                    ContactDiagnostics* diag);
   std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const std::vector<int>& touching);
   // writes slave node v's own state (through RestoreNode), its contact normal and its pending Delta
   // (f.pending[v]); nothing of any other node (the parallel loop relies on it), sums into *out
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out);
-  void LimitFrictionToStick(double dt, PairLoads* pair) const;
+  // true when the friction leaves the pair's slide under the null band (held in the next step)
+  bool LimitFrictionToStick(double dt, PairLoads* pair) const;
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
   bool LocateNode(const PassFrame& f, int v, bool was_touching, std::vector<Candidate>* scratch, Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
@@ -143,11 +144,12 @@ class ContactEngine {
   std::vector<std::unique_ptr<Locator>> locators_;
   std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame box holding every vertex so far, per body
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
-  std::vector<std::array<std::vector<int>, 2>> touching_;
+  std::vector<std::array<std::vector<int>, 2>> touching_;  // per pair (a<b): nodes of a, of b touching the other
+  std::vector<char> held_;  // per pair (a<b): friction left the slide under the null band in the last step
   std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop
   std::vector<std::vector<Vec3>> pending_delta_;  // [m] per body: new Delta awaiting commit (n_vertices)
   std::vector<std::vector<int>> moved_;           // per body: nodes whose pending Delta awaits commit
-  std::vector<std::vector<char>> touching_mark_;  // per body: 1 for nodes touching the current master  // per pair (a<b): nodes of a, of b touching the other
+  std::vector<std::vector<char>> touching_mark_;  // per body: 1 for nodes touching the current master
   ContactOptions options_;
   int step_index_ = 0;
   // the last step's pair loads and the states they were applied at, until AccountWork books them
