@@ -317,7 +317,18 @@ std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, i
 void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) {
   // locate, then restore and evaluate the node law
   Located hit;
-  const bool found = LocateNode(f, v, was_touching, &out->scratch, &hit);
+  bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
+  // spec §2 TOOFAR_MARGIN: a rigid master's surface does not move in its frame, so a node on it at
+  // its last update cannot be farther behind a face than the step's relative motion plus the margin;
+  // a deeper find is a face its line of motion reached past a corner (a pole's side, behind a node
+  // pressed on its front): it searches again along the normal of the face it was pressed on and takes
+  // the shallower find. (A deformable master moves its own nodes in the sibling pass: no such bound.)
+  if (f.master_model->rigid && found && was_touching && options_.search_direction != SearchDirection::kPolyNormal &&
+      hit.depth > hit.rel_velocity.norm() * dt + options_.toofar_margin) {
+    const Vec3 pressed_on = f.r_slave_to_master * f.slave->contact_normal[v];
+    Located again;
+    if (LocateNode(f, v, was_touching, &pressed_on, &out->scratch, &again) && again.depth < hit.depth) hit = again;
+  }
   if (found) ++out->diag.located;
   if (!found && !was_touching) return;
   Vec3 delta;
@@ -513,8 +524,8 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candida
   return true;
 }
 
-bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, std::vector<Candidate>* tris,
-                               Located* out) const {
+bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along,
+                               std::vector<Candidate>* tris, Located* out) const {
   const Vec3& p_slave = f.slave->vertices[v];
   const Vec3 p = f.ToMaster(p_slave);
   const Vec3 v_rel = f.RelativeVelocity(p_slave, p);
@@ -525,8 +536,8 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, std
   // a node in contact keeps meeting faces turned the same way (it left the last one through its
   // outside): a crushed-through panel's inner face does not take over and pull it in
   const Vec3 previous = was_touching ? Vec3(f.r_slave_to_master * f.slave->contact_normal[v]) : Vec3::Zero();
-  Vec3 dir = Vec3::Zero();
-  switch (options_.search_direction) {
+  Vec3 dir = along ? *along : Vec3::Zero();
+  switch (along ? SearchDirection::kSpecified : options_.search_direction) {
     case SearchDirection::kVelocity:
       // along the line of relative motion, turned to point into the slave (also while separating)
       if (v_rel.norm() > kStillSpeed) {
@@ -539,7 +550,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, std
       dir = inward;
       break;
     case SearchDirection::kSpecified:
-      dir = f.r_slave_to_master * options_.specified_direction.normalized();
+      if (!along) dir = f.r_slave_to_master * options_.specified_direction.normalized();
       break;
     case SearchDirection::kPolyNormal:
       break;  // per triangle below

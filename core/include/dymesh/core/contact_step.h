@@ -125,7 +125,9 @@ class ContactEngine {
   // true when the friction leaves the pair's slide under the null band (held in the next step)
   bool LimitFrictionToStick(double dt, PairLoads* pair) const;
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
-  bool LocateNode(const PassFrame& f, int v, bool was_touching, std::vector<Candidate>* scratch, Located* out) const;
+  // `along`: a search direction (master frame) instead of the method's, or null
+  bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
+                  Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
                        const Vec3& inward, const Vec3& previous, bool poly_normal, const Located* best,
                        Located* out) const;
