@@ -229,7 +229,7 @@ StepResult ContactEngine::Step(double dt) {
         if (pass < passes) run(pass, step_index_ % 2 == 0 ? b : a, false);
       }
       result.pairs.push_back(CombinePasses(a, b, sums));
-      held = LimitFrictionToStick(dt, &result.pairs.back()) ? 1 : 0;
+      held = LimitFriction(dt, &result.pairs.back()) ? 1 : 0;
     }
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
@@ -317,14 +317,14 @@ std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, i
 void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) {
   // locate, then restore and evaluate the node law
   Located hit;
-  bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
+  const bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
   // spec §2 TOOFAR_MARGIN: a rigid master's surface does not move in its frame, so a node on it at
   // its last update cannot be farther behind a face than the step's relative motion plus the margin;
   // a deeper find is a face its line of motion reached past a corner (a pole's side, behind a node
   // pressed on its front): it searches again along the normal of the face it was pressed on and takes
   // the shallower find. (A deformable master moves its own nodes in the sibling pass: no such bound.)
   if (f.master_model->rigid && found && was_touching && options_.search_direction != SearchDirection::kPolyNormal &&
-      hit.depth > hit.rel_velocity.norm() * dt + options_.toofar_margin) {
+      hit.depth > StepReach(hit, dt)) {
     const Vec3 pressed_on = f.r_slave_to_master * f.slave->contact_normal[v];
     Located again;
     if (LocateNode(f, v, was_touching, &pressed_on, &out->scratch, &again) && again.depth < hit.depth) hit = again;
@@ -458,7 +458,12 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
   return out;
 }
 
-bool ContactEngine::LimitFrictionToStick(double dt, PairLoads* p) const {
+double ContactEngine::StepReach(const Located& hit, double dt) const {
+  // spec §2 TOOFAR_MARGIN: the relative motion of a step plus the margin
+  return hit.rel_velocity.norm() * dt + options_.toofar_margin;
+}
+
+bool ContactEngine::LimitFriction(double dt, PairLoads* p) const {
   // spec §7 friction is Coulomb's: mu N while sliding, but never more than stops the slide within
   // the step (mu N held over a whole step can reverse a slow slide: friction pushing the bodies the
   // other way). The friction wrench's power on the step-start motion, against the power it adds to
@@ -524,6 +529,27 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candida
   return true;
 }
 
+Vec3 ContactEngine::SearchLine(const PassFrame& f, const Vec3& v_rel, const Vec3& inward) const {
+  // the search method's direction (spec §2), master frame, pointing into the slave; none for the
+  // polygon normal (it searches along each triangle's own)
+  switch (options_.search_direction) {
+    case SearchDirection::kVelocity:
+      // along the line of relative motion, turned to point into the slave (also while separating)
+      if (v_rel.norm() > kStillSpeed) {
+        const Vec3 dir = v_rel.normalized();
+        return dir.dot(inward) < 0.0 ? Vec3(-dir) : dir;
+      }
+      [[fallthrough]];  // no relative motion: fall back to the local normal
+    case SearchDirection::kLocalAverageNormal:
+      return inward;
+    case SearchDirection::kSpecified:
+      return f.r_slave_to_master * options_.specified_direction.normalized();
+    case SearchDirection::kPolyNormal:
+      break;
+  }
+  return Vec3::Zero();
+}
+
 bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along,
                                std::vector<Candidate>* tris, Located* out) const {
   const Vec3& p_slave = f.slave->vertices[v];
@@ -536,26 +562,8 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   // a node in contact keeps meeting faces turned the same way (it left the last one through its
   // outside): a crushed-through panel's inner face does not take over and pull it in
   const Vec3 previous = was_touching ? Vec3(f.r_slave_to_master * f.slave->contact_normal[v]) : Vec3::Zero();
-  Vec3 dir = along ? *along : Vec3::Zero();
-  switch (along ? SearchDirection::kSpecified : options_.search_direction) {
-    case SearchDirection::kVelocity:
-      // along the line of relative motion, turned to point into the slave (also while separating)
-      if (v_rel.norm() > kStillSpeed) {
-        dir = v_rel.normalized();
-        if (dir.dot(inward) < 0.0) dir = -dir;
-        break;
-      }
-      [[fallthrough]];  // no relative motion: fall back to the local normal
-    case SearchDirection::kLocalAverageNormal:
-      dir = inward;
-      break;
-    case SearchDirection::kSpecified:
-      if (!along) dir = f.r_slave_to_master * options_.specified_direction.normalized();
-      break;
-    case SearchDirection::kPolyNormal:
-      break;  // per triangle below
-  }
-  const bool poly_normal = options_.search_direction == SearchDirection::kPolyNormal;
+  const Vec3 dir = along ? *along : SearchLine(f, v_rel, inward);
+  const bool poly_normal = !along && options_.search_direction == SearchDirection::kPolyNormal;
   if (!poly_normal && dir.squaredNorm() == 0.0) return false;
 
   // candidate master triangles from the locator, examined in triangle order (DyMESH surface lists)
@@ -632,7 +640,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       ++diag->reduced;
     }
     // spec §2 TOOFAR_MARGIN: no restoring farther than the relative motion of a step plus the margin
-    const double too_far = hit->rel_velocity.norm() * dt + options_.toofar_margin;
+    const double too_far = StepReach(*hit, dt);
     if (push > too_far) {
       push = too_far;
       ++diag->too_far_limited;

@@ -54,15 +54,13 @@ void IntegrateRigidBody(const BodyModel& model, MotionModel motion, const Vec3& 
 
 double LoadPowerGain(const BodyModel& model, MotionModel motion, const RigidState& state, const Vec3& force_earth,
                      const Vec3& moment_earth) {
-  // the accelerations IntegrateRigidBody gives this load (without the gyroscopic term)
-  if (motion == MotionModel::kFixed || model.mass <= 0.0) return 0.0;
-  if (motion == MotionModel::kPlanar) {
-    return (force_earth.x() * force_earth.x() + force_earth.y() * force_earth.y()) / model.mass +
-           moment_earth.z() * moment_earth.z() / model.inertia(2, 2);
-  }
+  // the host's own step over unit time from rest (no gyroscopic term) gives the load's accelerations
   const Mat3 r = state.Rotation();
-  const Vec3 w_dot = model.inertia.ldlt().solve(r.transpose() * moment_earth);
-  return force_earth.squaredNorm() / model.mass + moment_earth.dot(r * w_dot);
+  RigidState still = state;
+  still.velocity = Vec3::Zero();
+  still.omega = Vec3::Zero();
+  IntegrateRigidBody(model, motion, force_earth, r.transpose() * moment_earth, 1.0, &still);
+  return force_earth.dot(still.velocity) + moment_earth.dot(r * still.omega);
 }
 
 double KineticEnergy(const BodyModel& model, const RigidState& s) {

@@ -22,7 +22,8 @@ Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<con
   guide_ = GuideTimeStep(scenario_, models);
   RefuseUnstableStep(scenario_, guide_);
   engine_ = std::make_unique<ContactEngine>(std::move(models), initial, scenario_.contact, make_locator);
-  for (std::size_t i = 0; i < scenario_.bodies.size(); ++i) engine_->SetMotion(static_cast<int>(i), scenario_.bodies[i].motion);
+  for (std::size_t i = 0; i < scenario_.bodies.size(); ++i)
+    engine_->SetMotion(static_cast<int>(i), scenario_.bodies[i].motion);
   Record(nullptr);
 }
 

@@ -122,9 +122,13 @@ class ContactEngine {
   // writes slave node v's own state (through RestoreNode), its contact normal and its pending Delta
   // (f.pending[v]); nothing of any other node (the parallel loop relies on it), sums into *out
   void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out);
-  // true when the friction leaves the pair's slide under the null band (held in the next step)
-  bool LimitFrictionToStick(double dt, PairLoads* pair) const;
+  // spec §7 Coulomb bounds on the pair's friction; true when it leaves the slide under the null band
+  // (held in the next step)
+  bool LimitFriction(double dt, PairLoads* pair) const;
+  // [m] spec §2 TOOFAR_MARGIN: the relative motion of a step plus the margin, at a located node
+  double StepReach(const Located& hit, double dt) const;
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
+  Vec3 SearchLine(const PassFrame& f, const Vec3& v_rel, const Vec3& inward) const;
   // `along`: a search direction (master frame) instead of the method's, or null
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
                   Located* out) const;
