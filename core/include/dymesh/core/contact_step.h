@@ -125,8 +125,6 @@ class ContactEngine {
   // spec §7 Coulomb bounds on the pair's friction; true when it leaves the slide under the null band
   // (held in the next step)
   bool LimitFriction(double dt, PairLoads* pair) const;
-  // [m] spec §2 TOOFAR_MARGIN: the relative motion of a step plus the margin, at a located node
-  double StepReach(const Located& hit, double dt) const;
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
   Vec3 SearchLine(const PassFrame& f, const Vec3& v_rel, const Vec3& inward) const;
   // `along`: a search direction (master frame) instead of the method's, or null
