@@ -27,6 +27,15 @@ inline BodySpec BoxVehicle(const std::string& name, double length, double width,
   return body;
 }
 
+// the earth frame turned by `angle` [rad] about the vertical: the body's pose and velocity seen from it
+// (a frame change: the physical scene is the same)
+inline void TurnAboutVertical(double angle, BodySpec* body) {
+  const Mat3 turn = BodyToEarth(0.0, 0.0, angle);
+  body->initial.position = turn * body->initial.position;
+  body->initial.velocity = turn * body->initial.velocity;
+  body->initial.yaw += angle;
+}
+
 // a rigid fixed wall whose face (normal -x) is at x = face_x [in]
 inline BodySpec RigidWall(double face_x_in) {
   BodySpec wall;

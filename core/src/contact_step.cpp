@@ -38,6 +38,13 @@ Stiffness CornerAverage(const BodyModel& model, const std::array<int, 3>& triang
   return k;
 }
 
+// a host's body index must name a body
+void RequireBodyIndex(int i, int count, const char* call) {
+  if (i < 0 || i >= count)
+    throw std::invalid_argument(std::string(call) + ": body " + std::to_string(i) + " is out of range 0.." +
+                                std::to_string(count - 1));
+}
+
 }  // namespace
 
 void ContactEngine::Wrench::Add(const Vec3& force, const Vec3& arm_slave, const Vec3& arm_master) {
@@ -173,17 +180,13 @@ bool ContactEngine::BoundsOverlap(int a, int b) const {
 }
 
 void ContactEngine::SetRigidState(int i, const RigidState& rigid) {
-  if (i < 0 || i >= body_count())
-    throw std::invalid_argument("SetRigidState: body " + std::to_string(i) + " is out of range 0.." +
-                                std::to_string(body_count() - 1));
+  RequireBodyIndex(i, body_count(), "SetRigidState");
   RequireFiniteState(rigid, i);
   states_[i].rigid = rigid;
 }
 
 void ContactEngine::SetMotion(int i, MotionModel motion) {
-  if (i < 0 || i >= body_count())
-    throw std::invalid_argument("SetMotion: body " + std::to_string(i) + " is out of range 0.." +
-                                std::to_string(body_count() - 1));
+  RequireBodyIndex(i, body_count(), "SetMotion");
   motions_[i] = motion;
 }
 
@@ -318,11 +321,11 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   // locate, then restore and evaluate the node law
   Located hit;
   const bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
-  // against a rigid master (its surface does not move in its frame) a node in contact entered through
-  // the face it is pressed on; the method's line can cross another face past a corner (a pole's side,
-  // behind a node pressed on its front) and load the node sideways with its whole crush. It also
-  // searches along the normal of the face it was pressed on and takes the shallower find, the shorter
-  // way out. (A deformable master moves its own nodes in the sibling pass: tried there, it moved the
+  // spec §2 Location: against a rigid master (its surface does not move in its frame) a node in
+  // contact entered through the face it is pressed on; the method's line can cross another face past
+  // a corner (a pole's side, behind a node pressed on its front) and load the node sideways with its
+  // whole crush. It also searches along the normal of the face it was pressed on and takes the
+  // shallower find, the shorter way out. (A deformable master moves its own nodes in the sibling pass: tried there, it moved the
   // car-to-car results by up to 5 %.)
   if (f.master_model->rigid && found && was_touching && options_.search_direction != SearchDirection::kPolyNormal) {
     const Vec3 pressed_on = f.r_slave_to_master * f.slave->contact_normal[v];

@@ -40,11 +40,7 @@ Scenario EccentricScenario(SearchDirection direction, StopRule stop, double time
   // the wall's face 0.5 in ahead of the box front, wide enough that no edge is ever reached
   BodySpec wall = testing::RigidWall(90.5);
   // a frame change: every pose and velocity turned about the vertical
-  for (BodySpec* b : {&box, &wall}) {
-    b->initial.position = Rz(frame_angle) * b->initial.position;
-    b->initial.velocity = Rz(frame_angle) * b->initial.velocity;
-    b->initial.yaw += frame_angle;
-  }
+  for (BodySpec* b : {&box, &wall}) testing::TurnAboutVertical(frame_angle, b);
   s.bodies = {box, wall};
   return s;
 }

@@ -54,11 +54,7 @@ Scenario SlidingScenario(double mu, const Variant& v) {
   box.friction = mu;
   BodySpec wall = testing::RigidWall(kLength / 2 + 0.5);
   wall.friction = mu;  // the pair's mu is the mean of the two
-  for (BodySpec* b : {&box, &wall}) {
-    b->initial.position = Rz(v.frame_angle) * b->initial.position;
-    b->initial.velocity = Rz(v.frame_angle) * b->initial.velocity;
-    b->initial.yaw += v.frame_angle;
-  }
+  for (BodySpec* b : {&box, &wall}) testing::TurnAboutVertical(v.frame_angle, b);
   s.bodies = v.wall_first ? std::vector<BodySpec>{wall, box} : std::vector<BodySpec>{box, wall};
   return s;
 }

@@ -13,6 +13,7 @@
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
+#include "test_scenarios.h"
 
 namespace dymesh {
 namespace {
@@ -100,12 +101,7 @@ TEST(Pulse, OffsetPoleDoesNotChatterOnAFinerMeshMorePassesOtherOrderTurnedFrame)
   ExpectOffsetPoleSmooth("3 passes", [](Scenario* s) { s->contact.passes_per_step = 3; });
   ExpectOffsetPoleSmooth("pole first", [](Scenario* s) { std::swap(s->bodies[0], s->bodies[1]); });
   ExpectOffsetPoleSmooth("frame +30 deg", [](Scenario* s) {
-    const Mat3 turn = BodyToEarth(0.0, 0.0, 30.0 * units::kDegree);
-    for (BodySpec& b : s->bodies) {
-      b.initial.position = turn * b.initial.position;
-      b.initial.velocity = turn * b.initial.velocity;
-      b.initial.yaw += 30.0 * units::kDegree;
-    }
+    for (BodySpec& b : s->bodies) testing::TurnAboutVertical(30.0 * units::kDegree, &b);
   });
 }
 
