@@ -648,9 +648,14 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       push = std::max(k.max_crush - deflection, 0.0);
       ++diag->max_crush_limited;
     }
-    // spec §6 MAX_GROW_UNLOAD: a node reloading below its peak grows at most this much per step
+    // spec §6 MAX_GROW_UNLOAD: a node reloading below its peak grows per step at most by the surfaces'
+    // approach along the normal plus this allowance, as TOOFAR bounds a push by the step's motion plus
+    // a margin (a bare 0.25 in per step is a reload speed that halves when the step doubles: coarse
+    // steps left reloading nodes lagging inside the master on their weak rebound curve)
     if (state == UnloadState::kNowUnloading || state == UnloadState::kFinishedUnloading) {
-      const double cap = std::max(s.step_start_deflection[v] + options_.max_grow_unload - deflection, 0.0);
+      const double approach = -receding;  // >= 0 here: the surfaces close
+      const double cap =
+          std::max(s.step_start_deflection[v] + approach + options_.max_grow_unload - deflection, 0.0);
       if (push > cap) {
         push = cap;
         ++diag->growth_limited;
@@ -660,8 +665,11 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     touching = true;
   } else if (can_spring && deflection > 0.0) {
     // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max;
-    // a node still inside a receding surface (an overlap a step left over) follows it by its motion
-    const double gap = !hit ? INFINITY : inside ? receding : -hit->depth;
+    // a node still inside a receding surface (an overlap a step left over) follows it by its motion,
+    // once per step however many passes meet it (a second pass against the same master used to spring
+    // it again: twice the surface's motion)
+    const double sprung = std::max(s.step_start_deflection[v] - deflection, 0.0);
+    const double gap = !hit ? INFINITY : inside ? std::max(receding - sprung, 0.0) : -hit->depth;
     const double available = std::max(deflection - (1.0 - e) * s.delta_max[v], 0.0);
     const double spring = std::min(gap, available);
     delta *= (deflection - spring) / deflection;

@@ -36,7 +36,7 @@ struct ContactOptions {
   double unload_begin = 0.05 * units::kInch;                 ///< [m] UNLOAD_BEGIN: delta_max needed before a node can unload
   double unload_pot = 0.001 * units::kInch;                  ///< [m] UNLOAD_POT: drop below delta_max that counts as unloading
   double unload_stop = 0.001 * units::kInch;                 ///< [m] UNLOAD_STOP: within this of (1-e) delta_max unloading is finished
-  double max_grow_unload = 0.25 * units::kInch;              ///< [m] MAX_GROW_UNLOAD: deflection growth per step while unloading
+  double max_grow_unload = 0.25 * units::kInch;              ///< [m] MAX_GROW_UNLOAD: reload growth per step beyond the surfaces' approach
   double friction_null_band = 1.0 * units::kInch;            ///< [m/s] FRICTION_NULL_BAND (spec §7)
   ReboundLaw rebound_law = ReboundLaw::kScaled;
   Eigen::Vector3d specified_direction{-1.0, 0.0, 0.0};       ///< pushback direction in the slave body frame (kSpecified)
