@@ -50,8 +50,9 @@ ReloadRun DriveIntoWall(double dt, double max_grow_unload_in, int passes) {
   const auto& rest = models[0]->mesh.vertices;
   for (int v = 0; v < static_cast<int>(rest.size()); ++v)
     if (std::abs(rest[v].x() - 90.0 * u::kInch) < 1e-9) front.push_back(v);
+  EXPECT_EQ(front.size(), 23u * 11u);  // the 22 x 10 grid of the 66 x 30 in face
   ReloadRun out;
-  const int steps = static_cast<int>(std::ceil(PlanEnd() / dt));
+  const int steps = static_cast<int>(std::lround(PlanEnd() / dt));
   for (int k = 1; k <= steps; ++k) {
     RigidState r = engine.state(0).rigid;
     const double p = Penetration(k * dt);
