@@ -325,8 +325,8 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   // contact entered through the face it is pressed on; the method's line can cross another face past
   // a corner (a pole's side, behind a node pressed on its front) and load the node sideways with its
   // whole crush. It also searches along the normal of the face it was pressed on and takes the
-  // shallower find, the shorter way out. (A deformable master moves its own nodes in the sibling pass: tried there, it moved the
-  // car-to-car results by up to 5 %.)
+  // shallower find, the shorter way out. (A deformable master moves its own nodes in the sibling
+  // pass: tried there, it moved the car-to-car results by up to 5 %.)
   if (f.master_model->rigid && found && was_touching && options_.search_direction != SearchDirection::kPolyNormal) {
     const Vec3 pressed_on = f.r_slave_to_master * f.slave->contact_normal[v];
     Located again;
@@ -587,7 +587,8 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
                      : options_.stop_rule == StopRule::kBestOfTwo ? 2 : INT32_MAX;
   int accepted = 0;
   for (const Candidate& c : *tris) {
-    if (ExamineTriangle(f, c, p, dir, inward, previous, poly_normal, accepted == 0 ? nullptr : out, out) && ++accepted >= wanted) break;
+    const Located* best = accepted == 0 ? nullptr : out;
+    if (ExamineTriangle(f, c, p, dir, inward, previous, poly_normal, best, out) && ++accepted >= wanted) break;
   }
   out->rel_velocity = v_rel;
   return accepted > 0;
