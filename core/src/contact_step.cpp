@@ -334,9 +334,20 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   }
   if (found) ++out->diag.located;
   if (!found && !was_touching) return;
+  // spec §6: a node pressed on the master that finds no face this step while the bodies still close
+  // on it along its last contact normal (it slid past a face's edge, or the other side's crush moved
+  // the face) springs back at most to the master's nearest surface: it cannot spring away from a
+  // surface that approaches it. (Springing its whole e delta_max at once left it up to 0.65 in outside
+  // a surface still closing on it, to come back on the weak rebound curve.) Bodies that part let it
+  // spring freely
+  const bool closing = hit.rel_velocity.dot(f.r_slave_to_master * f.slave->contact_normal[v]) < 0.0;
+  const double free_gap = found || !closing
+                              ? INFINITY
+                              : DistanceToMaster(f, v, f.slave_model->restitution * f.slave->delta_max[v],
+                                                 &out->scratch);
   Vec3 delta;
   const double node_force =
-      RestoreNode(f, v, found ? &hit : nullptr, was_touching, dt, &out->diag, &out->sums.law_energy, &delta);
+      RestoreNode(f, v, found ? &hit : nullptr, free_gap, dt, &out->diag, &out->sums.law_energy, &delta);
   if (delta != f.slave->delta[v]) {
     // the new crush waits in pending_delta_ until committed (with the sibling pass, or at once)
     (*f.pending)[v] = delta;
@@ -594,7 +605,23 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   return accepted > 0;
 }
 
-double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
+double ContactEngine::DistanceToMaster(const PassFrame& f, int v, double radius,
+                                       std::vector<Candidate>* scratch) const {
+  // the nearest point of the master's triangles that come within the radius (master frame)
+  const Vec3 p = f.ToMaster(f.slave->vertices[v]);
+  scratch->clear();
+  f.master_locator->TrianglesNearPoint(v, p, radius, scratch);
+  double nearest = INFINITY;
+  for (const Candidate& c : *scratch) {
+    const auto& tri = f.master_model->mesh.triangles[c.triangle];
+    const Vec3 q = ClosestPointOnTriangle(p, f.master->vertices[tri[0]], f.master->vertices[tri[1]],
+                                          f.master->vertices[tri[2]]);
+    nearest = std::min(nearest, (q - p).norm());
+  }
+  return nearest <= radius ? nearest : INFINITY;
+}
+
+double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, double free_gap, double dt,
                                   ContactDiagnostics* diag, double* law_energy, Vec3* new_delta) {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
@@ -670,13 +697,11 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     // once per step however many passes meet it (a second pass against the same master used to spring
     // it again: twice the surface's motion)
     const double sprung = std::max(s.step_start_deflection[v] - deflection, 0.0);
-    const double gap = !hit ? INFINITY : inside ? std::max(receding - sprung, 0.0) : -hit->depth;
+    const double gap = !hit ? free_gap : inside ? std::max(receding - sprung, 0.0) : -hit->depth;
     const double available = std::max(deflection - (1.0 - e) * s.delta_max[v], 0.0);
     const double spring = std::min(gap, available);
     delta *= (deflection - spring) / deflection;
     touching = hit && gap <= available;
-  } else if (!hit && !was_touching) {
-    return 0.0;
   }
 
   // NaN guard: a non-finite update is counted and dropped

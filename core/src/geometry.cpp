@@ -19,6 +19,29 @@ bool InsideTriangleCrossProduct(const Vec3& q, const Vec3& a, const Vec3& b, con
   return true;
 }
 
+Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  // the Voronoi region of p: a corner, an edge, or the face
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  // inside the face: barycentric projection (a degenerate triangle falls back to its corner a)
+  const double sum = va + vb + vc;
+  if (!(sum > 0.0)) return a;
+  return a + (vb / sum) * ab + (vc / sum) * ac;
+}
+
 bool RayPlaneDistance(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& n, double* t) {
   // distance along dir to the plane through a with normal n
   const double denom = dir.dot(n);

@@ -58,5 +58,22 @@ TEST(Dcm, EulerRatesOfPureYaw) {
   EXPECT_DOUBLE_EQ(rates.y(), 0.0);
 }
 
+TEST(ClosestPointOnTriangle, FaceEdgesAndCorners) {
+  // the right triangle (0,0,0), (1,0,0), (0,1,0): each Voronoi region's closest point by hand
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  const struct {
+    Vec3 p, closest;
+  } cases[] = {
+      {{0.2, 0.2, 1.0}, {0.2, 0.2, 0.0}},    // above the face: its foot
+      {{-1.0, -1.0, 0.5}, a},                // beyond corner a
+      {{2.0, -0.5, 0.0}, b},                 // beyond corner b
+      {{-0.5, 3.0, 0.0}, c},                 // beyond corner c
+      {{0.5, -1.0, 3.0}, {0.5, 0.0, 0.0}},   // beside edge ab
+      {{1.0, 1.0, 0.0}, {0.5, 0.5, 0.0}},    // beside edge bc
+      {{-1.0, 0.5, 2.0}, {0.0, 0.5, 0.0}},   // beside edge ca
+  };
+  for (const auto& k : cases) EXPECT_LT((ClosestPointOnTriangle(k.p, a, b, c) - k.closest).norm(), 1e-15) << k.p.transpose();
+}
+
 }  // namespace
 }  // namespace dymesh

@@ -133,9 +133,12 @@ class ContactEngine {
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
                        const Vec3& inward, const Vec3& previous, bool poly_normal, const Located* best,
                        Located* out) const;
+  // distance from slave node v to the master's nearest surface within `radius`, else infinity
+  double DistanceToMaster(const PassFrame& f, int v, double radius, std::vector<Candidate>* scratch) const;
   // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
-  // step_start_deflection; the new Delta goes to *new_delta (committed later)
-  double RestoreNode(const PassFrame& f, int v, const Located* hit, bool was_touching, double dt,
+  // step_start_deflection; the new Delta goes to *new_delta (committed later). `free_gap`: without a
+  // hit, how far the node may spring back (the distance to the master's surface)
+  double RestoreNode(const PassFrame& f, int v, const Located* hit, double free_gap, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta);
   void CommitPending(int body);
   bool BoundsOverlap(int a, int b) const;

@@ -37,6 +37,9 @@ bool SegmentCrossesTriangle(const Vec3& origin, const Vec3& dir, double length, 
 bool CandidateCrossing(const Vec3& origin, const Vec3& dir, double t_min, double t_max, const Vec3& a, const Vec3& b,
                        const Vec3& c, const Vec3& n, bool proven_inside, double* t);
 
+/// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5).
+Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
 /// Euler-angle DCM (spec §8, Amtx): maps body-frame vectors to the earth frame,
 /// R = Rz(yaw) * Ry(pitch) * Rx(roll), SAE axes (x forward, y right, z down).
 Mat3 BodyToEarth(double roll, double pitch, double yaw);
