@@ -564,6 +564,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   const Vec3& p_slave = f.slave->vertices[v];
   const Vec3 p = f.ToMaster(p_slave);
   const Vec3 v_rel = f.RelativeVelocity(p_slave, p);
+  out->rel_velocity = v_rel;  // also when nothing is found (the spring-back asks whether the bodies close)
   const double backoff = options_.search_backoff, reach = options_.toofar_maximum;
 
   // search direction (spec §2), pointing into the slave: it chooses the face; the push follows the face normal
@@ -601,7 +602,6 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
     const Located* best = accepted == 0 ? nullptr : out;
     if (ExamineTriangle(f, c, p, dir, inward, previous, poly_normal, best, out) && ++accepted >= wanted) break;
   }
-  out->rel_velocity = v_rel;
   return accepted > 0;
 }
 
