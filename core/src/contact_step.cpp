@@ -340,11 +340,9 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   // surface that approaches it. (Springing its whole e delta_max at once left it up to 0.65 in outside
   // a surface still closing on it, to come back on the weak rebound curve.) Bodies that part let it
   // spring freely
-  const bool closing = hit.rel_velocity.dot(f.r_slave_to_master * f.slave->contact_normal[v]) < 0.0;
-  const double free_gap = found || !closing
-                              ? INFINITY
-                              : DistanceToMaster(f, v, f.slave_model->restitution * f.slave->delta_max[v],
-                                                 &out->scratch);
+  double free_gap = INFINITY;
+  if (!found && hit.rel_velocity.dot(f.r_slave_to_master * f.slave->contact_normal[v]) < 0.0)
+    free_gap = DistanceToMaster(f, v, f.slave_model->restitution * f.slave->delta_max[v], &out->scratch);
   Vec3 delta;
   const double node_force =
       RestoreNode(f, v, found ? &hit : nullptr, free_gap, dt, &out->diag, &out->sums.law_energy, &delta);

@@ -8,18 +8,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include "dymesh/accel/embree_locator.h"
-#include "dymesh/core/contact_step.h"
-#include "dymesh/io/body_models.h"
-#include "test_scenarios.h"
+#include "box_at_wall.h"
 
 namespace dymesh {
 namespace {
 
 namespace u = dymesh::units;
 
-constexpr double kWallFaceIn = 90.5;  // the box's front face is at x = 90 in at rest
-constexpr double kSpeed = 600.0;      // [in/s] a car-to-car closing speed (34 mph)
+constexpr double kSpeed = 600.0;  // [in/s] a car-to-car closing speed (34 mph)
 
 // the host's plan: penetration [in] at time t [s] — in to 3 in, back to 1.8 in, in again to 4.5 in
 double Penetration(double t) {
@@ -54,36 +50,16 @@ ReloadRun DriveIntoWall(double dt, const Variant& setup) {
   s.contact.max_grow_unload = setup.max_grow_unload_in * u::kInch;
   s.contact.passes_per_step = setup.passes;
   s.contact.search_direction = setup.search;
-  const int n = setup.refine;
-  s.bodies[0].mesh.box_segments = {1, 22 * n, 10 * n};
-  const double turn = setup.turn_deg * M_PI / 180.0;
-  for (BodySpec& b : s.bodies) testing::TurnAboutVertical(turn, &b);
-  if (setup.wall_first) std::swap(s.bodies[0], s.bodies[1]);
-  const int box = setup.wall_first ? 1 : 0;
-  const Mat3 axes = BodyToEarth(0.0, 0.0, turn);
-  const auto models = BuildBodyModels(s);
-  ContactEngine engine(models, {s.bodies[0].initial, s.bodies[1].initial}, s.contact,
-                       accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
-  // the front face's nodes
-  std::vector<int> front;
-  const auto& rest = models[box]->mesh.vertices;
-  for (int v = 0; v < static_cast<int>(rest.size()); ++v)
-    if (std::abs(rest[v].x() - 90.0 * u::kInch) < 1e-9) front.push_back(v);
-  EXPECT_EQ(front.size(), static_cast<std::size_t>((22 * n + 1) * (10 * n + 1)));  // the 66 x 30 in face's grid
+  s.bodies[0].mesh.box_segments = {1, 22 * setup.refine, 10 * setup.refine};
+  testing::BoxAtWall host(s, setup.turn_deg, setup.wall_first);
   ReloadRun out;
   const int steps = static_cast<int>(std::lround(PlanEnd() / dt));
   for (int k = 1; k <= steps; ++k) {
-    RigidState r = engine.state(box).rigid;
     const double p = Penetration(k * dt);
-    r.position = axes * Vec3((p + kWallFaceIn - 90.0) * u::kInch, 0, 0);
-    r.velocity = axes * Vec3((p - Penetration((k - 1) * dt)) / dt * u::kInch, 0, 0);
-    engine.SetRigidState(box, r);
-    const StepResult result = engine.Step(dt);
-    for (int v : front) {
-      const double lag = engine.state(box).delta[v].norm() / u::kInch - std::max(p, 0.0);
-      out.worst_lag_in = std::max(out.worst_lag_in, std::abs(lag));
-    }
-    out.final_force_lbf = -(axes.transpose() * result.loads[box].force_earth).x() / u::kPoundForce;
+    const StepResult result = host.Drive(p, (p - Penetration((k - 1) * dt)) / dt, dt);
+    for (int v : host.front())
+      out.worst_lag_in = std::max(out.worst_lag_in, std::abs(host.Deflection(v) - std::max(p, 0.0)));
+    out.final_force_lbf = host.ForceOnBox(result);
   }
   return out;
 }
