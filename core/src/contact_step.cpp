@@ -692,10 +692,11 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   } else if (can_spring && deflection > 0.0) {
     // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max;
     // a node still inside a receding surface (an overlap a step left over) follows it by its motion,
-    // once per step however many passes meet it (a second pass against the same master used to spring
-    // it again: twice the surface's motion)
+    // and one in front of a face springs at most to the face's plane, once per step however many passes
+    // meet it (a second pass against the same master used to spring it again: twice the surface's
+    // motion, or twice the gap when the spring, along the crush, did not close it)
     const double sprung = std::max(s.step_start_deflection[v] - deflection, 0.0);
-    const double gap = !hit ? free_gap : inside ? std::max(receding - sprung, 0.0) : -hit->depth;
+    const double gap = !hit ? free_gap : std::max((inside ? receding : -hit->depth) - sprung, 0.0);
     const double available = std::max(deflection - (1.0 - e) * s.delta_max[v], 0.0);
     const double spring = std::min(gap, available);
     delta *= (deflection - spring) / deflection;

@@ -29,13 +29,14 @@ struct Arrangement {
   int refine = 1;  // the box's grid segments multiplied (2: each face cell split 1:4)
 };
 
-struct Result {
-  double worst_closing_in = 0.0;  // largest |deflection - closed form| after the wall left, box closing
-  double worst_parting_in = 0.0;  // the same, box backing away
+// after the step the wall moves away sideways: the front nodes' largest deflection error against the
+// closed form [in], and the load left on the box [lbf]
+struct AfterTheWallLeaves {
+  double worst_in = 0.0;
+  double load_lbf = 0.0;
 };
 
-// the front nodes' deflections [in] after the step the wall moves away sideways, against the closed form
-double WorstAfterTheWallLeaves(const Arrangement& setup, bool closing) {
+AfterTheWallLeaves Measure(const Arrangement& setup, bool closing) {
   Scenario s = testing::BarrierScenario(0.0, kRestitution, setup.dt);
   s.contact.passes_per_step = setup.passes;
   s.contact.search_direction = setup.search;
@@ -48,40 +49,52 @@ double WorstAfterTheWallLeaves(const Arrangement& setup, bool closing) {
   for (int v : host.front()) EXPECT_NEAR(host.Deflection(v), 3.0, 1e-9) << setup.name;
   // the wall (40 x 400 in) jumps sideways: its -y side face ends 0.2 in beyond the front's +y edge (y = 33 in)
   host.PlaceWall(testing::kWallFaceIn + 20.0, 200.0 + 33.0 + kGapIn);
-  host.Drive(closing ? 3.0 + advance : 3.0 - advance, closing ? kSpeed : -kSpeed, setup.dt);
+  const StepResult last = host.Drive(closing ? 3.0 + advance : 3.0 - advance, closing ? kSpeed : -kSpeed, setup.dt);
   // closing: a front node at rest y is 33.2 - y in from the wall's side face (its nearest surface: the
   // node is inside the wall's x range), so it springs min(that, 1.5 in); parting: 1.5 in
   const double elastic = kRestitution * 3.0;
-  double worst = 0.0;
+  AfterTheWallLeaves out;
   for (int v : host.front()) {
     const double spring = closing ? std::min(33.0 + kGapIn - host.RestY(v), elastic) : elastic;
-    worst = std::max(worst, std::abs(host.Deflection(v) - (3.0 - spring)));
+    out.worst_in = std::max(out.worst_in, std::abs(host.Deflection(v) - (3.0 - spring)));
   }
-  return worst;
+  // no node is on a wall face any more (the side face is 0.2 in beside the nearest): no load at all
+  out.load_lbf = last.loads[0].force_earth.norm() / units::kPoundForce;
+  return out;
 }
 
 TEST(SpringBack, NoFurtherThanTheSurfaceWhileClosingFreelyOnceParting) {
-  // Not the local average normal: this box's front edge nodes never meet the wall with it. Not the
-  // polygon normal: it searches along each face's own normal, so the edge column finds the wall's
-  // side face 0.2 in away (outside) and springs toward it along its crush, which that gap does not
-  // close, once per pass (0.4 in with two passes). Both in README → Known limits
+  // Not the local average normal: this box's front edge nodes never meet the wall with it (README →
+  // Known limits). The polygon normal searches along each face's own normal: the edge column finds the
+  // wall's side face 0.2 in away (outside) and springs toward it along its crush, which leaves that
+  // gap open; the spring is bounded once per step (it used to spring again with every pass: 0.4 in
+  // with two passes, 0.8 in with four)
   const Arrangement setups[] = {
       {"default"},
       {"dt/2", 0.00025},
       {"1 pass", 0.0005, 1},
       {"4 passes", 0.0005, 4},
       {"specified", 0.0005, 2, SearchDirection::kSpecified},
+      {"polygon normal", 0.0005, 2, SearchDirection::kPolyNormal},
+      {"polygon normal, 4 passes", 0.0005, 4, SearchDirection::kPolyNormal},
       {"wall listed first", 0.0005, 2, SearchDirection::kVelocity, true},
       {"frame +30 deg", 0.0005, 2, SearchDirection::kVelocity, false, 30.0},
       {"box mesh 1:4", 0.0005, 2, SearchDirection::kVelocity, false, 0.0, 2},
   };
   for (const Arrangement& setup : setups) {
-    const double closing = WorstAfterTheWallLeaves(setup, true), parting = WorstAfterTheWallLeaves(setup, false);
-    std::printf("[measured] spring-back, %s: closing worst error %.2e in, parting %.2e in\n", setup.name, closing,
-                parting);
+    const AfterTheWallLeaves closing = Measure(setup, true), parting = Measure(setup, false);
+    std::printf("[measured] spring-back, %s: closing worst error %.2e in, parting %.2e in; load %.3g, %.3g lbf\n",
+                setup.name, closing.worst_in, parting.worst_in, closing.load_lbf, parting.load_lbf);
     // 1e-9 in: metres converted and a point-to-face distance, far below the 0.2 in being checked
-    EXPECT_LT(closing, 1e-9) << setup.name;
-    EXPECT_LT(parting, 1e-9) << setup.name;
+    EXPECT_LT(closing.worst_in, 1e-9) << setup.name;
+    EXPECT_LT(parting.worst_in, 1e-9) << setup.name;
+    // no node touches: exactly no load. Not with the polygon normal: its edge column, sprung to the
+    // side face's distance, counts as touching that face and carries the rebound force along its normal
+    // (about 22,700 lbf here) although the spring, along the crush, left the 0.2 in gap open (README →
+    // Known limits; requiring the spring to close the gap moved the offset demo's delta-V SD over eight
+    // discretisations from 0.8 to 1.7 %)
+    EXPECT_EQ(parting.load_lbf, 0.0) << setup.name;
+    if (setup.search != SearchDirection::kPolyNormal) EXPECT_EQ(closing.load_lbf, 0.0) << setup.name;
   }
 }
 
