@@ -116,7 +116,15 @@ TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
   if (mesh.triangles.empty()) throw InputError(path, field, "mesh file has no triangles");
   // merge the vertices shared between assimp meshes
   TriMesh welded = WeldRelative(mesh);
-  if (welded.triangles.empty()) throw InputError(path, field, "mesh file has no non-degenerate triangles");
+  if (welded.triangles.empty()) {
+    // say what the merge distance was: one stray vertex far from the rest stretches it over the mesh
+    char what[200];
+    std::snprintf(what, sizeof what,
+                  "mesh file has no non-degenerate triangles once vertices closer than 1e-9 of its extent are "
+                  "merged (extent %.3g file units: a stray vertex far from the rest stretches it)",
+                  BoundsDiagonal(mesh));
+    throw InputError(path, field, what);
+  }
   return welded;
 }
 

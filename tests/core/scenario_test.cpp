@@ -277,6 +277,7 @@ TEST_F(ScenarioFiles, RefusesMeshFilesWithoutUsableTriangles) {
   const std::pair<const char*, const char*> cases[] = {
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "cannot read mesh file"},              // points only
       {"v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "non-finite vertex"},     // overflowing coordinate
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e30 0 1\nf 1 2 3\nf 1 2 4\n", "extent 1e+30"},  // a stray vertex
   };
   for (const auto& [text, reason] : cases) {
     WriteText(dir_ / "meshes" / "bad.obj", text);
