@@ -120,9 +120,9 @@ TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
     // say what the merge distance was: one stray vertex far from the rest stretches it over the mesh
     char what[200];
     std::snprintf(what, sizeof what,
-                  "mesh file has no non-degenerate triangles once vertices closer than 1e-9 of its extent are "
+                  "mesh file has no non-degenerate triangles once vertices closer than %.0e of its extent are "
                   "merged (extent %.3g file units: a stray vertex far from the rest stretches it)",
-                  BoundsDiagonal(mesh));
+                  kRelativeWeldTolerance, BoundsDiagonal(mesh));
     throw InputError(path, field, what);
   }
   return welded;

@@ -4,8 +4,10 @@
 // reload and spring-back tests.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "dymesh/accel/embree_locator.h"
@@ -17,15 +19,28 @@ namespace dymesh::testing {
 
 inline constexpr double kWallFaceIn = 90.5;  // the wall's face [in]; the box's front is at 90 in at rest
 
+// one way of setting up the same physical case: the options and arrangement a test varies
+struct Arrangement {
+  int passes = 2;
+  SearchDirection search = SearchDirection::kVelocity;
+  bool wall_first = false;  // body order
+  double turn_deg = 0.0;    // both bodies' frame turned about the vertical
+  int refine = 1;           // the box's grid segments multiplied (2: each face cell split 1:4)
+};
+
 class BoxAtWall {
  public:
-  // `s`: BarrierScenario with its options set; both frames turned `turn_deg` about the vertical; the
-  // wall listed first when `wall_first`. The front face's nodes are found and counted against its grid
-  BoxAtWall(Scenario s, double turn_deg, bool wall_first)
-      : axes_(BodyToEarth(0.0, 0.0, turn_deg * M_PI / 180.0)), box_(wall_first ? 1 : 0) {
-    const std::array<int, 3> grid = s.bodies[0].mesh.box_segments;
-    for (BodySpec& b : s.bodies) TurnAboutVertical(turn_deg * M_PI / 180.0, &b);
-    if (wall_first) std::swap(s.bodies[0], s.bodies[1]);
+  // `s`: BarrierScenario with its other options set; the arrangement's pass count, search direction and
+  // box grid, both frames turned about the vertical, the wall listed first if asked. The front face's
+  // nodes are found and counted against its grid
+  BoxAtWall(Scenario s, const Arrangement& a)
+      : axes_(BodyToEarth(0.0, 0.0, a.turn_deg * M_PI / 180.0)), box_(a.wall_first ? 1 : 0) {
+    s.contact.passes_per_step = a.passes;
+    s.contact.search_direction = a.search;
+    const std::array<int, 3> grid = {1, 22 * a.refine, 10 * a.refine};
+    s.bodies[0].mesh.box_segments = grid;
+    for (BodySpec& b : s.bodies) TurnAboutVertical(a.turn_deg * M_PI / 180.0, &b);
+    if (a.wall_first) std::swap(s.bodies[0], s.bodies[1]);
     models_ = BuildBodyModels(s);
     engine_ = std::make_unique<ContactEngine>(
         models_, std::vector<RigidState>{s.bodies[0].initial, s.bodies[1].initial}, s.contact,

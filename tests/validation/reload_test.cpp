@@ -37,21 +37,14 @@ struct ReloadRun {
 struct Variant {
   const char* name;
   double max_grow_unload_in = 0.25;
-  int passes = 2;
-  SearchDirection search = SearchDirection::kVelocity;
-  bool wall_first = false;  // body order
-  double turn_deg = 0.0;    // both bodies' frame turned about the vertical
-  int refine = 1;           // the box's grid segments multiplied (2: each face cell split 1:4)
+  testing::Arrangement arrangement;
 };
 
 // the box is moved by the host along its x to the planned penetration each step (its velocity the plan's)
 ReloadRun DriveIntoWall(double dt, const Variant& setup) {
   Scenario s = testing::BarrierScenario(0.0, 0.5, dt);
   s.contact.max_grow_unload = setup.max_grow_unload_in * u::kInch;
-  s.contact.passes_per_step = setup.passes;
-  s.contact.search_direction = setup.search;
-  s.bodies[0].mesh.box_segments = {1, 22 * setup.refine, 10 * setup.refine};
-  testing::BoxAtWall host(s, setup.turn_deg, setup.wall_first);
+  testing::BoxAtWall host(s, setup.arrangement);
   ReloadRun out;
   const int steps = static_cast<int>(std::lround(PlanEnd() / dt));
   for (int k = 1; k <= steps; ++k) {
@@ -76,13 +69,13 @@ TEST(Reload, FrontNodesFollowTheWallAtAnyStep) {
   const Variant setups[] = {
       {"default"},
       {"allowance 0.05 in", 0.05},
-      {"1 pass", 0.25, 1},
-      {"4 passes", 0.25, 4},
-      {"polygon normal", 0.25, 2, SearchDirection::kPolyNormal},
-      {"specified", 0.25, 2, SearchDirection::kSpecified},
-      {"wall listed first", 0.25, 2, SearchDirection::kVelocity, true},
-      {"frame +30 deg", 0.25, 2, SearchDirection::kVelocity, false, 30.0},
-      {"box mesh 1:4", 0.25, 2, SearchDirection::kVelocity, false, 0.0, 2},
+      {"1 pass", 0.25, {1}},
+      {"4 passes", 0.25, {4}},
+      {"polygon normal", 0.25, {2, SearchDirection::kPolyNormal}},
+      {"specified", 0.25, {2, SearchDirection::kSpecified}},
+      {"wall listed first", 0.25, {2, SearchDirection::kVelocity, true}},
+      {"frame +30 deg", 0.25, {2, SearchDirection::kVelocity, false, 30.0}},
+      {"box mesh 1:4", 0.25, {2, SearchDirection::kVelocity, false, 0.0, 2}},
   };
   for (double dt : {0.001, 0.0005, 0.00025}) {
     for (const Variant& setup : setups) {

@@ -19,14 +19,10 @@ constexpr double kGapIn = 0.2;        // the wall's side face beside the front's
 constexpr double kRestitution = 0.5;  // elastic part of a 3 in crush: e delta_max = 1.5 in
 
 // one way of setting up the same physical case
-struct Arrangement {
+struct Variant {
   const char* name;
   double dt = 0.0005;
-  int passes = 2;
-  SearchDirection search = SearchDirection::kVelocity;
-  bool wall_first = false;
-  double turn_deg = 0.0;
-  int refine = 1;  // the box's grid segments multiplied (2: each face cell split 1:4)
+  testing::Arrangement arrangement;
 };
 
 // after the step the wall moves away sideways: the front nodes' largest deflection error against the
@@ -36,12 +32,8 @@ struct AfterTheWallLeaves {
   double load_lbf = 0.0;
 };
 
-AfterTheWallLeaves Measure(const Arrangement& setup, bool closing) {
-  Scenario s = testing::BarrierScenario(0.0, kRestitution, setup.dt);
-  s.contact.passes_per_step = setup.passes;
-  s.contact.search_direction = setup.search;
-  s.bodies[0].mesh.box_segments = {1, 22 * setup.refine, 10 * setup.refine};
-  testing::BoxAtWall host(s, setup.turn_deg, setup.wall_first);
+AfterTheWallLeaves Measure(const Variant& setup, bool closing) {
+  testing::BoxAtWall host(testing::BarrierScenario(0.0, kRestitution, setup.dt), setup.arrangement);
   // in from 0.3 in short to 3 in, at the plan's speed
   const double advance = kSpeed * setup.dt;
   const int steps = static_cast<int>(std::lround(3.3 / advance));
@@ -69,19 +61,19 @@ TEST(SpringBack, NoFurtherThanTheSurfaceWhileClosingFreelyOnceParting) {
   // wall's side face 0.2 in away (outside) and springs toward it along its crush, which leaves that
   // gap open; the spring is bounded once per step (it used to spring again with every pass: 0.4 in
   // with two passes, 0.8 in with four)
-  const Arrangement setups[] = {
+  const Variant setups[] = {
       {"default"},
       {"dt/2", 0.00025},
-      {"1 pass", 0.0005, 1},
-      {"4 passes", 0.0005, 4},
-      {"specified", 0.0005, 2, SearchDirection::kSpecified},
-      {"polygon normal", 0.0005, 2, SearchDirection::kPolyNormal},
-      {"polygon normal, 4 passes", 0.0005, 4, SearchDirection::kPolyNormal},
-      {"wall listed first", 0.0005, 2, SearchDirection::kVelocity, true},
-      {"frame +30 deg", 0.0005, 2, SearchDirection::kVelocity, false, 30.0},
-      {"box mesh 1:4", 0.0005, 2, SearchDirection::kVelocity, false, 0.0, 2},
+      {"1 pass", 0.0005, {1}},
+      {"4 passes", 0.0005, {4}},
+      {"specified", 0.0005, {2, SearchDirection::kSpecified}},
+      {"polygon normal", 0.0005, {2, SearchDirection::kPolyNormal}},
+      {"polygon normal, 4 passes", 0.0005, {4, SearchDirection::kPolyNormal}},
+      {"wall listed first", 0.0005, {2, SearchDirection::kVelocity, true}},
+      {"frame +30 deg", 0.0005, {2, SearchDirection::kVelocity, false, 30.0}},
+      {"box mesh 1:4", 0.0005, {2, SearchDirection::kVelocity, false, 0.0, 2}},
   };
-  for (const Arrangement& setup : setups) {
+  for (const Variant& setup : setups) {
     const AfterTheWallLeaves closing = Measure(setup, true), parting = Measure(setup, false);
     std::printf("[measured] spring-back, %s: closing worst error %.2e in, parting %.2e in; load %.3g, %.3g lbf\n",
                 setup.name, closing.worst_in, parting.worst_in, closing.load_lbf, parting.load_lbf);
@@ -94,7 +86,7 @@ TEST(SpringBack, NoFurtherThanTheSurfaceWhileClosingFreelyOnceParting) {
     // Known limits; requiring the spring to close the gap moved the offset demo's delta-V SD over eight
     // discretisations from 0.8 to 1.7 %)
     EXPECT_EQ(parting.load_lbf, 0.0) << setup.name;
-    if (setup.search != SearchDirection::kPolyNormal) EXPECT_EQ(closing.load_lbf, 0.0) << setup.name;
+    if (setup.arrangement.search != SearchDirection::kPolyNormal) EXPECT_EQ(closing.load_lbf, 0.0) << setup.name;
   }
 }
 
