@@ -37,7 +37,7 @@ struct ReloadRun {
 struct Variant {
   const char* name;
   double max_grow_unload_in = 0.25;
-  testing::Arrangement arrangement;
+  testing::Arrangement arrangement{};
 };
 
 // the box is moved by the host along its x to the planned penetration each step (its velocity the plan's)

@@ -22,7 +22,7 @@ constexpr double kRestitution = 0.5;  // elastic part of a 3 in crush: e delta_m
 struct Variant {
   const char* name;
   double dt = 0.0005;
-  testing::Arrangement arrangement;
+  testing::Arrangement arrangement{};
 };
 
 // after the step the wall moves away sideways: the front nodes' largest deflection error against the
@@ -86,7 +86,9 @@ TEST(SpringBack, NoFurtherThanTheSurfaceWhileClosingFreelyOnceParting) {
     // Known limits; requiring the spring to close the gap moved the offset demo's delta-V SD over eight
     // discretisations from 0.8 to 1.7 %)
     EXPECT_EQ(parting.load_lbf, 0.0) << setup.name;
-    if (setup.arrangement.search != SearchDirection::kPolyNormal) EXPECT_EQ(closing.load_lbf, 0.0) << setup.name;
+    if (setup.arrangement.search != SearchDirection::kPolyNormal) {
+      EXPECT_EQ(closing.load_lbf, 0.0) << setup.name;
+    }
   }
 }
 

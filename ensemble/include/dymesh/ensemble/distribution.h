@@ -13,7 +13,7 @@ enum class DistributionKind {
 struct Distribution {
   DistributionKind kind = DistributionKind::kFixed;
   double a = 0.0, b = 0.0, c = 0.0, d = 0.0;  ///< parameters by kind (see Quantile)
-  std::vector<double> values, cumulative;    ///< discrete: the values and their cumulative weights
+  std::vector<double> values{}, cumulative{};    ///< discrete: the values and their cumulative weights
 };
 
 /// The value at probability u in (0, 1):

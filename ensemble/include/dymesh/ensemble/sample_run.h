@@ -32,9 +32,9 @@ struct SampleRecord {
   int index = -1;
   std::string line;                        ///< JSON, no newline
   std::string status;                      ///< run status, or "failed_input" when refused
-  std::map<std::string, double> outputs;   ///< "BODY.QUANTITY" -> value (scenario units)
-  std::vector<double> inputs;              ///< the sample's input values, in spec order
-  std::map<std::string, double> observables;  ///< outputs plus BODY.c1..c6, rest_x, rest_y, rest_heading
+  std::map<std::string, double> outputs{}; ///< "BODY.QUANTITY" -> value (scenario units)
+  std::vector<double> inputs{};            ///< the sample's input values, in spec order
+  std::map<std::string, double> observables{};  ///< outputs plus BODY.c1..c6, rest_x, rest_y, rest_heading
 };
 
 /// CRASH3 2-D coefficients of a preset from b0 and b1 (the preset's units): A = m b0 b1 / L,

@@ -26,9 +26,9 @@ inline constexpr int kDefaultStopMinSamples = 50;
 
 struct Input {
   std::string name;
-  std::string path;      ///< JSON path into the scenario, e.g. bodies[0].initial.speed
-  std::string pointer;   ///< the same as a JSON pointer, /bodies/0/initial/speed; empty for a preset's input
-  Distribution distribution;
+  std::string path{};    ///< JSON path into the scenario, e.g. bodies[0].initial.speed
+  std::string pointer{}; ///< the same as a JSON pointer, /bodies/0/initial/speed; empty for a preset's input
+  Distribution distribution{};
   double low = -1e300, high = 1e300;  ///< hard physical bounds: a sample outside is refused
   int levels = 3;                     ///< grid design: quantile levels of this input
 };

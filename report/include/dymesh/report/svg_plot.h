@@ -25,7 +25,7 @@ void DecimateMinMax(const std::vector<double>& x, const std::vector<double>& y, 
 /// One line of a plot.
 struct PlotSeries {
   std::string label;
-  std::vector<double> x, y;
+  std::vector<double> x{}, y{};
   std::string colour = "#1f77b4";  ///< CSS colour
   bool dashed = false;
   bool points = false;             ///< also draw a dot at every point
@@ -50,9 +50,9 @@ struct PlotBand {
 struct LinePlot {
   std::string id;                  ///< element id of the <svg>
   std::string title, x_label, y_label;
-  std::vector<PlotSeries> series;
-  std::vector<PlotMarker> markers;
-  std::optional<PlotBand> band;
+  std::vector<PlotSeries> series{};
+  std::vector<PlotMarker> markers{};
+  std::optional<PlotBand> band{};
   bool invert_y = false;           ///< y grows downward (crush depth into a face)
   bool include_zero = true;        ///< y range always contains 0
   int width = 600, height = 320;   ///< [px]
