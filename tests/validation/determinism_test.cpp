@@ -118,8 +118,9 @@ TEST(Determinism, CarToCarRealMeshesAtAnyThreadCount) {
 }
 
 TEST(Determinism, HighPolygonCarToCarAtAnyThreadCount) {
-  // about 137k and 72k triangles (two 1-to-4 subdivisions), the first 30 ms of the pulse
-  ExpectThreadCountIndependent(CarToCar(2, 0.03), 0x80a34de3818355f1ull);
+  // about 137k and 72k triangles (two 1-to-4 subdivisions), the first 30 ms of the pulse (hash
+  // renewed 2026-11-24: the locator no longer trusts a grazing float hit as clear of its edges)
+  ExpectThreadCountIndependent(CarToCar(2, 0.03), 0x1abf9a04798d5551ull);
 }
 
 }  // namespace
