@@ -42,7 +42,6 @@ BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid) {
   s.tri_normal.assign(nt, Vec3::Zero());
   s.tri_centre.assign(nt, Vec3::Zero());
   s.tri_area.assign(nt, 0.0);
-  s.vertex_normal.assign(nv, Vec3::Zero());
   // triangle normals, centres and areas of the undamaged mesh
   std::vector<int> all(nv);
   for (size_t v = 0; v < nv; ++v) all[v] = static_cast<int>(v);
@@ -68,20 +67,6 @@ void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, B
       s->tri_centre[t] = (a + b + c) / 3.0;
     }
   }
-  // the vertex normals those triangles enter: every vertex when all moved, else the corners around
-  // the moved ones (a short list, each once)
-  if (vertices.size() == s->vertices.size()) {
-    for (size_t v = 0; v < vertices.size(); ++v) s->vertex_normal[v] = LocalAverageNormal(model, *s, static_cast<int>(v));
-    return;
-  }
-  std::vector<int> corners;
-  for (int v : vertices) {
-    for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k)
-      for (int corner : model.mesh.triangles[adj.ids[k]]) corners.push_back(corner);
-  }
-  std::sort(corners.begin(), corners.end());
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-  for (int v : corners) s->vertex_normal[v] = LocalAverageNormal(model, *s, v);
 }
 
 Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& s, int v) {

@@ -566,7 +566,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   const double backoff = options_.search_backoff, reach = options_.toofar_maximum;
 
   // search direction (spec §2), pointing into the slave: it chooses the face; the push follows the face normal
-  const Vec3 inward = -(f.r_slave_to_master * f.slave->vertex_normal[v]);
+  const Vec3 inward = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
   // a node in contact keeps meeting faces turned the same way (it left the last one through its
   // outside): a crushed-through panel's inner face does not take over and pull it in
   const Vec3 previous = was_touching ? Vec3(f.r_slave_to_master * f.slave->contact_normal[v]) : Vec3::Zero();

@@ -58,7 +58,6 @@ struct BodyState {
   std::vector<Vec3> tri_centre;      ///< [m] centre, body frame (n_triangles)
   std::vector<double> tri_area;      ///< [m^2] current area (n_triangles)
   std::vector<double> tri_area_orig; ///< [m^2] undamaged area (n_triangles)
-  std::vector<Vec3> vertex_normal;   ///< [-] LocalAverageNormal of each vertex, kept with the triangles (n_vertices)
   std::vector<int> touching;         ///< vertices in contact at their last update, ascending
   double law_energy = 0.0;           ///< [J] work of the node law on this body's nodes (integral g A d delta)
   double crush_energy = 0.0;         ///< [J] ledger: this body's share of the normal contact work
@@ -68,8 +67,7 @@ struct BodyState {
 /// Fresh state at rest pose: undamaged vertices, triangle normals and areas.
 BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid);
 
-/// Recomputes normal, centre and area of every triangle touching `vertices` (body frame), and the
-/// local average normal of every vertex of those triangles.
+/// Recomputes normal, centre and area of every triangle touching `vertices` (body frame).
 void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, BodyState* state);
 
 /// Area-weighted average outward normal of vertex v (USE_LOCAL_AVERAGE_NORMAL), body frame, unit.
