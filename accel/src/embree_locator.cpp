@@ -32,6 +32,16 @@ struct CollectContext {
   const EmbreeLocator* locator;
 };
 
+// |cos| of the angle between the ray and the hit face's normal (0 for a degenerate face)
+double RayFaceCosine(const RTCFilterFunctionNArguments* args) {
+  const Vec3 ng(RTCHitN_Ng_x(args->hit, args->N, 0), RTCHitN_Ng_y(args->hit, args->N, 0),
+                RTCHitN_Ng_z(args->hit, args->N, 0));
+  const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, 0), RTCRayN_dir_y(args->ray, args->N, 0),
+                 RTCRayN_dir_z(args->ray, args->N, 0));
+  const double lengths = ng.norm() * dir.norm();
+  return lengths > 0.0 ? std::abs(ng.dot(dir)) / lengths : 0.0;
+}
+
 void CollectAllHits(const RTCFilterFunctionNArguments* args) {
   // record the triangle (and whether the hit is clear of its edges), then reject the hit so that
   // traversal goes on along the whole segment
@@ -43,15 +53,8 @@ void CollectAllHits(const RTCFilterFunctionNArguments* args) {
   // normal: a ray grazing a face (seen at 89.5 degrees on a car's flat side) landed on the neighbour
   // of the face the double test crosses, trusted as clear of its edges. Clear means the edge margin
   // over that cosine
-  const double ng[3] = {RTCHitN_Ng_x(args->hit, args->N, 0), RTCHitN_Ng_y(args->hit, args->N, 0),
-                        RTCHitN_Ng_z(args->hit, args->N, 0)};
-  const double dir[3] = {RTCRayN_dir_x(args->ray, args->N, 0), RTCRayN_dir_y(args->ray, args->N, 0),
-                         RTCRayN_dir_z(args->ray, args->N, 0)};
-  const double ng_len = std::sqrt(ng[0] * ng[0] + ng[1] * ng[1] + ng[2] * ng[2]);
-  const double dir_len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-  const double cosine = std::abs(ng[0] * dir[0] + ng[1] * dir[1] + ng[2] * dir[2]) / (ng_len * dir_len);
-  const double clearance = std::min({u, v, 1.0f - u - v}) * cosine;
-  ctx->out->push_back({triangle, ng_len > 0.0 && clearance >= ctx->locator->EdgeMargin(triangle)});
+  const double clearance = std::min({u, v, 1.0f - u - v}) * RayFaceCosine(args);
+  ctx->out->push_back({triangle, clearance >= ctx->locator->EdgeMargin(triangle)});
   args->valid[0] = 0;
 }
 
