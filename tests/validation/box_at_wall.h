@@ -28,6 +28,24 @@ struct Arrangement {
   int refine = 1;           // the box's grid segments multiplied (2: each face cell split 1:4)
 };
 
+struct NamedArrangement {
+  const char* name;
+  Arrangement arrangement;
+};
+
+// the arrangements a box-at-wall law is checked across: pass counts, search directions, body order,
+// a turned frame and a finer box
+inline std::vector<NamedArrangement> ArrangementVariants() {
+  return {{"default", {}},
+          {"1 pass", {1}},
+          {"4 passes", {4}},
+          {"specified", {2, SearchDirection::kSpecified}},
+          {"polygon normal", {2, SearchDirection::kPolyNormal}},
+          {"wall listed first", {2, SearchDirection::kVelocity, true}},
+          {"frame +30 deg", {2, SearchDirection::kVelocity, false, 30.0}},
+          {"box mesh 1:4", {2, SearchDirection::kVelocity, false, 0.0, 2}}};
+}
+
 class BoxAtWall {
  public:
   // `s`: BarrierScenario with its other options set; the arrangement's pass count, search direction and

@@ -66,17 +66,8 @@ TEST(Reload, FrontNodesFollowTheWallAtAnyStep) {
   // spring-back while backing off must not repeat per pass. (Not the local average normal: on this
   // box, one segment long, a front edge node's normal is nearly its 180 in side's, so its ray runs
   // almost along the wall and never meets it, whatever the step)
-  const Variant setups[] = {
-      {"default"},
-      {"allowance 0.05 in", 0.05},
-      {"1 pass", 0.25, {1}},
-      {"4 passes", 0.25, {4}},
-      {"polygon normal", 0.25, {2, SearchDirection::kPolyNormal}},
-      {"specified", 0.25, {2, SearchDirection::kSpecified}},
-      {"wall listed first", 0.25, {2, SearchDirection::kVelocity, true}},
-      {"frame +30 deg", 0.25, {2, SearchDirection::kVelocity, false, 30.0}},
-      {"box mesh 1:4", 0.25, {2, SearchDirection::kVelocity, false, 0.0, 2}},
-  };
+  std::vector<Variant> setups = {{"allowance 0.05 in", 0.05}};
+  for (const auto& a : testing::ArrangementVariants()) setups.push_back({a.name, 0.25, a.arrangement});
   for (double dt : {0.001, 0.0005, 0.00025}) {
     for (const Variant& setup : setups) {
       const ReloadRun run = DriveIntoWall(dt, setup);
