@@ -121,8 +121,7 @@ BodyMemory MeasureBodyMemory(const BodyModel& model) {
   rtcSetDeviceMemoryMonitorFunction(static_cast<RTCDevice>(device->handle()), CountBytes, &embree_bytes);
   {
     accel::EmbreeLocator locator(device, model.mesh);
-    m.embree = static_cast<size_t>(embree_bytes.load()) + model.mesh.triangles.size() * sizeof(std::array<int, 3>) +
-               (model.mesh.vertices.size() + 1 + 3 * model.mesh.triangles.size()) * sizeof(int);
+    m.embree = static_cast<size_t>(embree_bytes.load()) + locator.HostBytes();
   }
   return m;
 }

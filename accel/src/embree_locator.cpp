@@ -12,9 +12,16 @@
 namespace dymesh::accel {
 namespace {
 
-// a hit this many inflations away from every edge of its triangle is inside the double triangle
-// for sure (float rounding and the inflation together stay below two inflations)
+// a hit this many inflations away from every edge of its inflated triangle is inside the double
+// triangle for sure (float rounding and the inflation together stay below two inflations); the
+// growth below is added on top
 constexpr double kInsideMargin = 8.0;
+
+// each float triangle is also grown in its plane until its edges stand this many inflations outside
+// the inflated ones (more than the inflation can pull an edge in, plus rounding)...
+constexpr double kGrowth = 2.0;
+// ...but no corner moves more than this many inflations (a needle's tip would run off)
+constexpr double kMaxCornerShift = 64.0;
 
 // triangles per Embree geometry on a large mesh: a crush refits only the groups it touches
 constexpr size_t kGroupSize = 4096;
@@ -112,14 +119,15 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
     hi = hi.cwiseMax(p);
   }
   inflation_ = 4.0 * std::max({lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff(), 1.0}) * std::ldexp(1.0, -23);
-  // shared float vertices, inflated; padded so the last vertex can be read with a 16-byte load
-  vertex_buffer_.assign(3 * nv + 4, 0.0f);
-  stamp_.assign(nv, 0);
+  // inflated vertices; float corners, three per triangle, each triangle grown with its edge margin
+  // (padded so the last corner can be read with a 16-byte load)
+  inflated_.resize(nv);
+  affected_.assign(nv, 0);
   LinkTwins(mesh.vertices);
   for (size_t v = 0; v < nv; ++v) InflateVertex(mesh.vertices, static_cast<int>(v));
-  // barycentric margin of each triangle: kInsideMargin inflations over its smallest altitude
+  corner_buffer_.assign(9 * nt + 4, 0.0f);
   edge_margin_.resize(nt);
-  for (size_t t = 0; t < nt; ++t) UpdateEdgeMargin(mesh.vertices, static_cast<int>(t));
+  for (size_t t = 0; t < nt; ++t) GrowTriangle(static_cast<int>(t));
   // groups: triangles in Morton order of their centres, cut into runs of kGroupSize (a small mesh: one run)
   const size_t group_size = nt <= kSingleGeometryLimit ? std::max<size_t>(nt, 1) : kGroupSize;
   std::vector<std::pair<std::uint32_t, int>> order(nt);
@@ -131,10 +139,10 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   }
   std::sort(order.begin(), order.end());
   group_triangles_.resize(nt);
-  triangle_group_.resize(nt);
+  if (group_size < nt) triangle_group_.resize(nt);  // a single group needs no table
   for (size_t i = 0; i < nt; ++i) {
     group_triangles_[i] = order[i].second;
-    triangle_group_[order[i].second] = static_cast<int>(i / group_size);
+    if (group_size < nt) triangle_group_[order[i].second] = static_cast<int>(i / group_size);
   }
   for (size_t first = 0; first < nt; first += group_size) group_first_.push_back(static_cast<int>(first));
   group_first_.push_back(static_cast<int>(nt));
@@ -147,14 +155,14 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   for (size_t g = 0; g + 1 < group_first_.size(); ++g) {
     RTCGeometry geom = rtcNewGeometry(Dev(*device_), RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
-    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertex_buffer_.data(), 0,
-                               3 * sizeof(float), nv);
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, corner_buffer_.data(), 0,
+                               3 * sizeof(float), 3 * nt);
     const int count = group_first_[g + 1] - group_first_[g];
     auto* index = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
     for (int i = 0; i < count; ++i) {
-      const auto& tri = triangles_[group_triangles_[group_first_[g] + i]];
-      for (int k = 0; k < 3; ++k) index[3 * i + k] = static_cast<unsigned>(tri[k]);
+      const int t = group_triangles_[group_first_[g] + i];
+      for (int k = 0; k < 3; ++k) index[3 * i + k] = static_cast<unsigned>(3 * t + k);
     }
     rtcCommitGeometry(geom);
     // determinism: geometry ids are the group indices
@@ -176,52 +184,74 @@ void EmbreeLocator::InflateVertex(const std::vector<Vec3>& vertices, int v) {
   // rest position (a display mesh's seams) share the normal of all their triangles, summed from the
   // lowest index: they move alike and the float surface keeps no crack the double one does not have
   Vec3 normal = Vec3::Zero();
-  int u = twin_first_[v];
+  const int first = LowestTwin(v);
+  int u = first;
   do {
     for (int k = ring_.offsets[u]; k < ring_.offsets[u + 1]; ++k) {
       const auto& t = triangles_[ring_.ids[k]];
       normal += TriangleCross(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
     }
     u = twin_next_[u];
-  } while (u != twin_first_[v]);
+  } while (u != first);
   const double len = normal.norm();
-  const Vec3 p = len > 0.0 ? Vec3(vertices[v] + (inflation_ / len) * normal) : vertices[v];
-  for (int k = 0; k < 3; ++k) vertex_buffer_[3 * v + k] = static_cast<float>(p[k]);
+  inflated_[v] = (len > 0.0 ? Vec3(vertices[v] + (inflation_ / len) * normal) : vertices[v]).cast<float>();
+}
+
+void EmbreeLocator::GrowTriangle(int t) {
+  // where two faces fold back onto each other (crushed sheet metal) their vertex normals cancel and
+  // the inflation may pull the fold's edge in: a segment through the fold, a hair from its edge,
+  // crossed both faces in double and neither in float. So each float triangle is its inflated one
+  // grown about its centre until every edge stands kGrowth inflations further out; neighbours
+  // overlap, which only adds candidates
+  const auto& tri = triangles_[t];
+  const Vec3 a = inflated_[tri[0]].cast<double>(), b = inflated_[tri[1]].cast<double>(),
+             c = inflated_[tri[2]].cast<double>();
+  const Vec3 centre = (a + b + c) / 3.0;
+  // an edge's distance from the centre is a third of its altitude
+  const double twice_area = TriangleCross(a, b, c).norm();
+  const double longest = std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
+  const double farthest = std::sqrt(
+      std::max({(a - centre).squaredNorm(), (b - centre).squaredNorm(), (c - centre).squaredNorm()}));
+  double scale = 1.0;
+  if (twice_area > 0.0) {
+    scale += std::min(3.0 * kGrowth * inflation_ * longest / twice_area, kMaxCornerShift * inflation_ / farthest);
+  }
+  // a hit's barycentric distance from the grown edges exceeds its distance from the inflated ones by
+  // at most (scale - 1) / 3; a sliver thinner than the margin always gets the double test
+  const double margin = twice_area > 0.0 ? kInsideMargin * inflation_ * longest / twice_area + (scale - 1.0) / 3.0 : 1.0;
+  edge_margin_[t] = static_cast<float>(std::min(margin, 1.0));
+  float* out = &corner_buffer_[9 * t];
+  for (const Vec3& p : {a, b, c}) {
+    const Vec3 grown = centre + scale * (p - centre);
+    for (int k = 0; k < 3; ++k) *out++ = static_cast<float>(grown[k]);
+  }
 }
 
 void EmbreeLocator::LinkTwins(const std::vector<Vec3>& vertices) {
-  // vertices at exactly one position: a cycle through them, and the lowest index of each
+  // vertices at exactly one position: a cycle through them in increasing index
   const int nv = static_cast<int>(vertices.size());
   std::vector<int> order(nv);
   for (int v = 0; v < nv; ++v) order[v] = v;
   auto key = [&](int v) { return std::array<double, 3>{vertices[v].x(), vertices[v].y(), vertices[v].z()}; };
   std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) != key(b) ? key(a) < key(b) : a < b; });
   twin_next_.resize(nv);
-  twin_first_.resize(nv);
   for (int i = 0; i < nv;) {
     int j = i;
     while (j < nv && key(order[j]) == key(order[i])) ++j;
-    for (int k = i; k < j; ++k) {
-      twin_first_[order[k]] = order[i];
-      twin_next_[order[k]] = order[k + 1 < j ? k + 1 : i];
-    }
+    for (int k = i; k < j; ++k) twin_next_[order[k]] = order[k + 1 < j ? k + 1 : i];
     i = j;
   }
 }
 
-void EmbreeLocator::UpdateEdgeMargin(const std::vector<Vec3>& vertices, int t) {
-  // altitude = 2 area / edge length, smallest over the three edges
-  const auto& tri = triangles_[t];
-  const double twice_area = TriangleCross(vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]).norm();
-  double longest = 0.0;
-  for (int k = 0; k < 3; ++k) longest = std::max(longest, (vertices[tri[(k + 1) % 3]] - vertices[tri[k]]).norm());
-  const double altitude = longest > 0.0 ? twice_area / longest : 0.0;
-  edge_margin_[t] = altitude > 0.0 ? static_cast<float>(std::min(kInsideMargin * inflation_ / altitude, 1.0)) : 1.0f;
+int EmbreeLocator::LowestTwin(int v) const {
+  // the cycle rises in index and wraps from its highest vertex to its lowest
+  int u = v;
+  while (twin_next_[u] > u) u = twin_next_[u];
+  return twin_next_[u];
 }
 
 void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<int>& moved) {
   // vertices whose position or normal changed: the moved ones and their neighbours
-  ++update_count_;
   std::vector<int> affected;
   for (int v : moved) {
     for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
@@ -229,8 +259,8 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
         // the corner and the vertices at its rest position (they share its normal)
         int u = corner;
         do {
-          if (stamp_[u] != update_count_) {
-            stamp_[u] = update_count_;
+          if (!affected_[u]) {
+            affected_[u] = 1;
             affected.push_back(u);
           }
           u = twin_next_[u];
@@ -238,14 +268,21 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
       }
     }
   }
+  for (int v : affected) InflateVertex(vertices, v);
+  // triangles with an inflated corner that moved, each grown again once (at its lowest such corner),
+  // and their groups refit
   std::vector<char> dirty(geometries_.size(), 0);
   for (int v : affected) {
-    InflateVertex(vertices, v);
-    for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) dirty[triangle_group_[ring_.ids[k]]] = 1;
+    for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
+      const int t = ring_.ids[k];
+      const bool lowest = std::none_of(triangles_[t].begin(), triangles_[t].end(),
+                                       [&](int c) { return c < v && affected_[c]; });
+      if (!lowest) continue;
+      GrowTriangle(t);
+      dirty[triangle_group_.empty() ? 0 : triangle_group_[t]] = 1;
+    }
   }
-  for (int v : moved) {
-    for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) UpdateEdgeMargin(vertices, ring_.ids[k]);
-  }
+  for (int v : affected) affected_[v] = 0;
   // refit only the groups that hold a changed vertex; the scene commits before its next queries
   for (size_t g = 0; g < geometries_.size(); ++g) {
     if (!dirty[g]) continue;
@@ -314,6 +351,14 @@ void EmbreeLocator::TrianglesNearPoint(int /*key*/, const Vec3& p, double radius
   rtcInitPointQueryContext(&context);
   NearContext near{out, this};
   rtcPointQuery(static_cast<RTCScene>(scene_), &query, &context, CollectNearPrimitive, &near);
+}
+
+size_t EmbreeLocator::HostBytes() const {
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return bytes(geometries_) + bytes(inflated_) + bytes(corner_buffer_) + bytes(triangles_) +
+         bytes(ring_.offsets) + bytes(ring_.ids) + bytes(group_first_) + bytes(group_triangles_) +
+         bytes(triangle_group_) + bytes(edge_margin_) + bytes(twin_next_) +
+         bytes(affected_);
 }
 
 LocatorFactory MakeEmbreeLocatorFactory(std::shared_ptr<const EmbreeDevice> device) {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <random>
 
 #include "dymesh/io/summary_json.h"
@@ -76,6 +77,33 @@ TEST(LocatorAgreement, EmbreeFindsTheSeamOfADisplayMesh) {
   }
 }
 
+// rays from origin(i), i in [-n, n], along dir: every face the double test crosses is proposed by
+// Embree, and every proposal trusted as inside is crossed. Returns how many rays cross a face
+int ExpectEveryCrossedFaceProposed(const TriMesh& mesh, const std::function<Vec3(int)>& origin, const Vec3& dir,
+                                   double length, int n) {
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  accel::EmbreeLocator embree(device, mesh);
+  accel::BruteForceLocator brute(mesh);
+  int crossed = 0;
+  for (int i = -n; i <= n; ++i) {
+    std::vector<Candidate> exact, found;
+    brute.TrianglesAlongSegment(i, origin(i), dir, length, &exact);
+    embree.TrianglesAlongSegment(i, origin(i), dir, length, &found);
+    std::vector<int> crosses, proposed;
+    for (const Candidate& e : exact) crosses.push_back(e.triangle);
+    for (const Candidate& f : found) proposed.push_back(f.triangle);
+    std::sort(crosses.begin(), crosses.end());
+    std::sort(proposed.begin(), proposed.end());
+    for (int t : crosses) EXPECT_TRUE(std::binary_search(proposed.begin(), proposed.end(), t)) << "ray " << i << " face " << t;
+    for (const Candidate& f : found) {
+      if (!f.inside) continue;
+      EXPECT_TRUE(std::binary_search(crosses.begin(), crosses.end(), f.triangle)) << "ray " << i;
+    }
+    crossed += !crosses.empty();
+  }
+  return crossed;
+}
+
 TEST(LocatorAgreement, EmbreeTrustsNoGrazingHitNearAnEdge) {
   // two faces of a car's flat side (the stock car's, where a sample of the ensemble demo met it),
   // rays grazing them at 89.5 degrees across their shared edge. A float hit's error along a face
@@ -87,31 +115,35 @@ TEST(LocatorAgreement, EmbreeTrustsNoGrazingHitNearAnEdge) {
   TriMesh panel;
   panel.vertices = {a, b, c, a + c - b};
   panel.triangles = {{0, 1, 2}, {0, 2, 3}};
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  accel::EmbreeLocator embree(device, panel);
-  accel::BruteForceLocator brute(panel);
+  // the sample's ray, moved up to 2 mm along z: crossings on both sides of the edge and on it
+  auto origin = [](int i) { return Vec3(1.67415636, -0.567167749, 0.033792417 + 2e-5 * i); };
   const Vec3 dir(-0.999965598, 0.00829474236, 0.0);
-  int crossed = 0;
-  for (int i = -100; i <= 100; ++i) {
-    // the sample's ray, moved up to 2 mm along z: crossings on both sides of the edge and on it
-    const Vec3 origin(1.67415636, -0.567167749, 0.033792417 + 2e-5 * i);
-    std::vector<Candidate> exact, found;
-    brute.TrianglesAlongSegment(i, origin, dir, 0.2032, &exact);
-    embree.TrianglesAlongSegment(i, origin, dir, 0.2032, &found);
-    std::vector<int> crosses, proposed;
-    for (const Candidate& e : exact) crosses.push_back(e.triangle);
-    for (const Candidate& f : found) proposed.push_back(f.triangle);
-    std::sort(crosses.begin(), crosses.end());
-    std::sort(proposed.begin(), proposed.end());
-    // every face the double test crosses is proposed; a proposal trusted as inside is crossed
-    for (int t : crosses) EXPECT_TRUE(std::binary_search(proposed.begin(), proposed.end(), t)) << "offset " << i;
-    for (const Candidate& f : found) {
-      if (!f.inside) continue;
-      EXPECT_TRUE(std::binary_search(crosses.begin(), crosses.end(), f.triangle)) << "offset " << i;
+  EXPECT_EQ(ExpectEveryCrossedFaceProposed(panel, origin, dir, 0.2032, 100), 201);  // every ray crosses
+}
+
+TEST(LocatorAgreement, EmbreeProposesBothSheetsOfAFold) {
+  // two faces of the stock car's crushed front folded back onto each other (sample 94 of the ensemble
+  // demo, step 755), and a ray through both sheets a hair from their shared edge. Their vertex
+  // normals nearly cancel, so inflating along them did not carry the fold's edge outward: the ray
+  // crossed both faces in double and neither in float. The same for the fold's other orientation
+  // (windings reversed: the normals, and so the inflation, turn over) and for rays past the edge
+  const Vec3 v1439(1.98631602, 0.0519918906, 0.0628153023), v2821(2.00016229, 0.065896574, 0.110369883),
+      v3536(1.83280847, 0.16302044, 0.219156662), v2814(1.90260036, 0.0436656875, 0.128754858);
+  const Vec3 o(1.94727278, 0.192497915, 0.159436955), dir(-0.263272379, -0.964721543, 0.0);
+  // rays 10 nm apart across the edge, 2 um either side of the sample's ray
+  const Vec3 across = dir.cross(v3536 - v2821).normalized();
+  auto origin = [&](int i) { return Vec3(o + 1e-8 * i * across); };
+  for (bool reversed : {false, true}) {
+    TriMesh fold;
+    fold.vertices = {v1439, v2821, v3536, v2814};
+    fold.triangles = {{0, 1, 2}, {3, 2, 1}};
+    if (reversed) {
+      for (auto& t : fold.triangles) std::swap(t[1], t[2]);
     }
-    crossed += !crosses.empty();
+    const int crossed = ExpectEveryCrossedFaceProposed(fold, origin, dir, 0.2032, 200);
+    EXPECT_GT(crossed, 100) << "reversed " << reversed;  // the sweep reaches both sides of the edge
+    EXPECT_LT(crossed, 401) << "reversed " << reversed;
   }
-  EXPECT_EQ(crossed, 201);  // every ray crosses the panel
 }
 
 // same contact step with either locator, from random interpenetrating poses

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,26 +57,29 @@ class EmbreeLocator final : public Locator {
   /// Smallest barycentric distance from the edges at which a hit on triangle t is surely inside it.
   float EdgeMargin(int t) const { return edge_margin_[t]; }
 
+  /// Bytes of the locator's own tables (Embree's scene and BVH are counted by the device).
+  size_t HostBytes() const;
+
  private:
   void InflateVertex(const std::vector<Vec3>& vertices, int v);
+  void GrowTriangle(int t);
   void LinkTwins(const std::vector<Vec3>& vertices);
-  void UpdateEdgeMargin(const std::vector<Vec3>& vertices, int t);
+  int LowestTwin(int v) const;
 
   std::shared_ptr<const EmbreeDevice> device_;
   void* scene_ = nullptr;
   std::vector<void*> geometries_;      // one RTCGeometry per triangle group
-  std::vector<float> vertex_buffer_;   // shared float3 vertices (+ padding for 16-byte loads)
+  std::vector<Eigen::Vector3f> inflated_;  // vertices moved `inflation_` out along their normals (n_vertices)
+  std::vector<float> corner_buffer_;   // float3 corners, three per triangle (+ padding)
   double inflation_ = 0.0;             // [m] float surface offset outward along the vertex normals
   std::vector<std::array<int, 3>> triangles_;
   VertexTriangles ring_;               // triangles around each vertex
   std::vector<int> group_first_;       // first slot of each group in group_triangles_ (n_groups + 1)
   std::vector<int> group_triangles_;   // mesh triangles, group by group (n_triangles)
-  std::vector<int> triangle_group_;    // group of each mesh triangle (n_triangles)
+  std::vector<int> triangle_group_;    // group of each mesh triangle (n_triangles; empty: one group)
   std::vector<float> edge_margin_;     // barycentric margin of a sure inside hit (n_triangles)
   std::vector<int> twin_next_;         // next vertex at the same rest position, a cycle (n_vertices)
-  std::vector<int> twin_first_;        // lowest index at the same rest position (n_vertices)
-  std::vector<int> stamp_;             // scratch marks for Update (n_vertices)
-  int update_count_ = 0;
+  std::vector<std::uint8_t> affected_;  // scratch marks for Update, all 0 between calls (n_vertices)
   bool uncommitted_ = false;           // groups refit since the last scene commit
 };
 
