@@ -25,11 +25,12 @@ class EmbreeDevice {
 
 /// Candidate triangles from an Embree scene: every triangle a segment crosses (an intersection
 /// filter records each hit and lets traversal go on; hits near an edge add the triangles around it),
-/// or every triangle near a point (point query). The float surface is inflated by a few ulps so that
-/// no segment the double-precision test accepts slips past a silhouette edge. A large mesh (over 64k
-/// triangles) is split into spatially compact groups, one Embree geometry each over a shared vertex
-/// buffer, so a crush refits only the groups it touched; a smaller one is a single geometry (a scene
-/// of three or more geometries costs ~0.4 ms per commit).
+/// or every triangle near a point (point query). The float surface is inflated by a few ulps, and each
+/// triangle, with its own float corners, grown past its edges by a few more, so that no segment the
+/// double-precision test accepts slips past a silhouette edge or through a fold. A large mesh (over
+/// 64k triangles) is split into spatially compact groups, one Embree geometry each over the shared
+/// corner buffer, so a crush refits only the groups it touched; a smaller one is a single geometry (a
+/// scene of three or more geometries costs ~0.4 ms per commit).
 class EmbreeLocator final : public Locator {
  public:
   EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const TriMesh& mesh);
