@@ -40,6 +40,19 @@ TEST(RigidBody, PlanarHoldsHeightRollAndPitch) {
   EXPECT_NEAR(s.omega.z(), 1.0 * 0.01, 1e-12);
 }
 
+TEST(RigidBody, PlanarDropsRollAndPitchRatesItIsGiven) {
+  // a host (or a C caller) may hand a planar body roll and pitch rates: they are dropped, the yaw
+  // rate kept (before 2026-11-24 the body pitched at the rate it was given)
+  const BodyModel m = Block();
+  RigidState s;
+  s.omega = Vec3(0.3, 0.5, 0.2);
+  for (int i = 0; i < 10; ++i) IntegrateRigidBody(m, MotionModel::kPlanar, Vec3::Zero(), Vec3::Zero(), 1e-3, &s);
+  EXPECT_EQ(s.roll, 0.0);
+  EXPECT_EQ(s.pitch, 0.0);
+  EXPECT_EQ(s.omega, Vec3(0.0, 0.0, 0.2));
+  EXPECT_NEAR(s.yaw, 0.2 * 0.01, 1e-15);
+}
+
 TEST(RigidBody, TorqueFreeSpinAboutPrincipalAxisKeepsEnergy) {
   const BodyModel m = Block();
   RigidState s;
