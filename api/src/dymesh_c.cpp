@@ -4,7 +4,9 @@
 
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -136,10 +138,43 @@ dymesh::LocatorFactory Locators() {
 
 // ---- worlds from arrays -----------------------------------------------------------------------
 
+// bytes of dm_body_desc before the fields appended since the first ABI (a caller built with that
+// header passes this struct_size)
+constexpr size_t kBodyDescFirstSize = offsetof(dm_body_desc, motion);
+
+// body i of the caller's array, whose elements are struct_size bytes apart; fields the caller's
+// header did not have read as 0 (their defaults), fields of a newer header are not read
+dm_body_desc BodyDescAt(const dm_body_desc* bodies, int i) {
+  size_t stride = 0;
+  std::memcpy(&stride, bodies, sizeof stride);
+  Require(stride >= kBodyDescFirstSize, "bodies[0].struct_size: expected sizeof(dm_body_desc)");
+  const auto* element = reinterpret_cast<const unsigned char*>(bodies) + static_cast<size_t>(i) * stride;
+  dm_body_desc d;
+  std::memset(&d, 0, sizeof d);
+  std::memcpy(&d, element, std::min(stride, sizeof d));
+  const std::string at = "bodies[" + std::to_string(i) + "]";
+  Require(d.struct_size == stride, at + ".struct_size: expected the same size as bodies[0]'s");
+  return d;
+}
+
+// the motion model of a description (a fixed body takes only the default)
+dymesh::MotionModel MotionFromDesc(const dm_body_desc& d, const std::string& at) {
+  const bool fixed = d.fixed != 0;
+  Require(d.motion >= DM_MOTION_DEFAULT && d.motion <= DM_MOTION_GRAVITY,
+          at + ".motion: expected a dm_motion: DM_MOTION_DEFAULT, _PLANAR, _FREE or _GRAVITY (0-3), got " +
+              std::to_string(d.motion));
+  Require(!fixed || d.motion == DM_MOTION_DEFAULT, at + ".motion: a fixed body takes DM_MOTION_DEFAULT");
+  switch (d.motion) {
+    case DM_MOTION_FREE: return dymesh::MotionModel::kFree6Dof;
+    case DM_MOTION_GRAVITY: return dymesh::MotionModel::kGravityGround;
+    case DM_MOTION_PLANAR: return dymesh::MotionModel::kPlanar;
+    default: return fixed ? dymesh::MotionModel::kFixed : dymesh::MotionModel::kPlanar;
+  }
+}
+
 // one body's model and scenario entry from its description
 std::shared_ptr<const dymesh::BodyModel> BodyFromDesc(const dm_body_desc& d, int i, dymesh::BodySpec* spec) {
   const std::string at = "bodies[" + std::to_string(i) + "]";
-  Require(d.struct_size >= sizeof(dm_body_desc), at + ".struct_size: expected sizeof(dm_body_desc)");
   Require(d.name != nullptr && d.name[0] != '\0', at + ".name: expected a non-empty name");
   NotNull(d.vertices, (at + ".vertices").c_str());
   NotNull(d.triangles, (at + ".triangles").c_str());
@@ -170,7 +205,7 @@ std::shared_ptr<const dymesh::BodyModel> BodyFromDesc(const dm_body_desc& d, int
   spec->name = d.name;
   spec->mass = fixed ? 0.0 : d.mass;
   spec->rigid = rigid;
-  spec->motion = fixed ? dymesh::MotionModel::kFixed : dymesh::MotionModel::kPlanar;
+  spec->motion = MotionFromDesc(d, at);
   spec->restitution = d.restitution, spec->friction = d.friction;
   spec->stiffness = k;
   spec->initial = ToRigid(d.initial, i);
@@ -243,7 +278,7 @@ dm_status dm_world_create(const dm_world_desc* desc, const dm_body_desc* bodies,
     scenario.bodies.resize(body_count);
     bool any_deformable = false;
     for (int i = 0; i < body_count; ++i) {
-      models.push_back(BodyFromDesc(bodies[i], i, &scenario.bodies[i]));
+      models.push_back(BodyFromDesc(BodyDescAt(bodies, i), i, &scenario.bodies[i]));
       any_deformable = any_deformable || !scenario.bodies[i].rigid;
     }
     Require(any_deformable, "bodies: every body is rigid: at least one must be deformable");

@@ -143,9 +143,9 @@ static void test_force_provider(void) {
   dm_body_desc bodies[2];
   memset(bodies, 0, sizeof bodies);
   bodies[0] = (dm_body_desc){sizeof(dm_body_desc), "car", car_v, 8, car_t, 12, 1500.0, {400, 2500, 2700},
-                             1.0e5, 1.0e6, 0.1, 0.0, 0, 0, {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}};
+                             1.0e5, 1.0e6, 0.1, 0.0, 0, 0, {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 0};
   bodies[1] = (dm_body_desc){sizeof(dm_body_desc), "wall", wall_v, 8, wall_t, 12, 0.0, {0, 0, 0},
-                             0.0, 0.0, 0.1, 0.0, 1, 1, {{2.76, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}};
+                             0.0, 0.0, 0.1, 0.0, 1, 1, {{2.76, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, 0};
   dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
   dm_world* w = NULL;
   CHECK(dm_world_create(&desc, bodies, 2, &w) == DM_OK);
@@ -174,6 +174,75 @@ static void test_force_provider(void) {
   dm_world_destroy(w);
 }
 
+/* the final state of a box car coasting clear of a fixed wall (no contact), set off at 1 m/s along x,
+   0.2 m/s down and pitching at 0.5 rad/s; its description `struct_size` bytes long, with `motion` */
+static dm_body_state coast(size_t struct_size, int32_t motion) {
+  double car_v[24], wall_v[24];
+  int32_t car_t[36], wall_t[36];
+  make_box(4.5, 1.7, 0.8, car_v, car_t);
+  make_box(1.0, 10.0, 2.5, wall_v, wall_t);
+  dm_body_desc bodies[2];
+  memset(bodies, 0, sizeof bodies);
+  bodies[0] = (dm_body_desc){sizeof(dm_body_desc), "car", car_v, 8, car_t, 12, 1500.0, {400, 2500, 2700},
+                             1.0e5, 1.0e6, 0.1, 0.0, 0, 0, {{0, 0, 0}, 0, 0, 0, {1.0, 0, 0.2}, {0, 0.5, 0}}, motion};
+  bodies[1] = (dm_body_desc){sizeof(dm_body_desc), "wall", wall_v, 8, wall_t, 12, 0.0, {0, 0, 0},
+                             0.0, 0.0, 0.1, 0.0, 1, 1, {{20.0, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, 0};
+  /* an older caller's array: elements struct_size bytes apart */
+  unsigned char packed[2 * sizeof(dm_body_desc)];
+  for (int i = 0; i < 2; ++i) {
+    bodies[i].struct_size = struct_size;
+    memcpy(packed + i * struct_size, &bodies[i], struct_size);
+  }
+  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.1, 0, 2};
+  dm_body_state end;
+  memset(&end, 0, sizeof end);
+  dm_world* w = NULL;
+  CHECK(dm_world_create(&desc, (const dm_body_desc*)packed, 2, &w) == DM_OK);
+  if (!w) return end;
+  CHECK(dm_world_run(w) == DM_OK);
+  CHECK(dm_body_state_get(w, 0, &end) == DM_OK);
+  dm_world_destroy(w);
+  return end;
+}
+
+/* the motion model of a body built from arrays: planar by default (and for a caller whose struct
+   ends before `motion`), free on request; bad values refused */
+static void test_motion(void) {
+  /* free, no loads: x, z and pitch all grow linearly, so z / x = 0.2 and pitch / x = 0.5 (1e-9:
+     round-off of a constant-rate integration) */
+  const dm_body_state free6 = coast(sizeof(dm_body_desc), DM_MOTION_FREE);
+  CHECK(free6.position[0] > 0.09);
+  CHECK(fabs(free6.position[2] / free6.position[0] - 0.2) < 1e-9);
+  CHECK(fabs(free6.pitch / free6.position[0] - 0.5) < 1e-9);
+  CHECK(fabs(free6.omega[1] - 0.5) < 1e-12);
+  /* planar (the default, and an older caller's struct whatever lies beyond it): height and pitch held */
+  const dm_body_state planar = coast(sizeof(dm_body_desc), DM_MOTION_DEFAULT);
+  const dm_body_state older = coast(offsetof(dm_body_desc, motion), DM_MOTION_FREE);
+  CHECK(planar.position[0] == free6.position[0]);
+  CHECK(planar.position[2] == 0.0 && planar.pitch == 0.0 && planar.omega[1] == 0.0);
+  CHECK(memcmp(&planar, &older, sizeof planar) == 0);
+  CHECK(memcmp(&planar, &(dm_body_state){0}, sizeof planar) != 0);
+  /* a bad motion, and a fixed body asked to move */
+  double v[24];
+  int32_t t[36];
+  make_box(1, 1, 1, v, t);
+  dm_body_desc bad[2];
+  memset(bad, 0, sizeof bad);
+  bad[0] = (dm_body_desc){sizeof(dm_body_desc), "a", v, 8, t, 12, 1.0, {1, 1, 1}, 1e5, 1e6, 0, 0, 0, 0,
+                          {{0, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, 7};
+  bad[1] = bad[0];
+  bad[1].name = "b";
+  bad[1].initial.position[0] = 5.0;
+  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world* w = NULL;
+  CHECK(dm_world_create(&desc, bad, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].motion"));
+  bad[0].motion = DM_MOTION_DEFAULT;
+  bad[1].fixed = 1;
+  bad[1].motion = DM_MOTION_FREE;
+  CHECK(dm_world_create(&desc, bad, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[1].motion: a fixed body"));
+  CHECK(w == NULL);
+}
+
 int main(int argc, char** argv) {
   if (argc != 4) {
     fprintf(stderr, "usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR\n");
@@ -185,6 +254,7 @@ int main(int argc, char** argv) {
   test_world_mode(scenario, argv[2], argv[3]);
   test_threads(scenario);
   test_force_provider();
+  test_motion();
   if (failures) fprintf(stderr, "%d checks failed\n", failures);
   return failures ? 1 : 0;
 }

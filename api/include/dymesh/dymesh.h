@@ -76,6 +76,14 @@ typedef struct dm_loads {
   double force_earth[3]; /**< [N] earth frame */
 } dm_loads;
 
+/** How a body moves besides the collision loads (dm_body_desc.motion; a scenario's "motion"). */
+typedef enum dm_motion {
+  DM_MOTION_DEFAULT = 0, /**< planar for a moving body; a `fixed` body does not move */
+  DM_MOTION_PLANAR = 1,  /**< x, y and yaw; height, roll and pitch held ("planar") */
+  DM_MOTION_FREE = 2,    /**< all six degrees of freedom, no gravity ("free") */
+  DM_MOTION_GRAVITY = 3  /**< six degrees of freedom, gravity and a ground support at the initial CG height ("gravity") */
+} dm_motion;
+
 /** One body built from arrays (dm_world_create). */
 typedef struct dm_body_desc {
   size_t struct_size;      /**< sizeof(dm_body_desc) */
@@ -93,6 +101,7 @@ typedef struct dm_body_desc {
   int32_t rigid;            /**< nonzero: takes no crush */
   int32_t fixed;            /**< nonzero: does not move */
   dm_body_state initial;
+  int32_t motion;           /**< a dm_motion; appended 2026-11-24: a struct_size that ends before it means DM_MOTION_DEFAULT */
 } dm_body_desc;
 
 /** The run as a whole (dm_world_create). */

@@ -22,9 +22,9 @@ int main(void) {
   box(1.0, 10.0, 2.5, wall);
   dm_body_desc bodies[2] = {
       {sizeof(dm_body_desc), "car", car, 8, faces, 12, 1500.0, {400, 2500, 2700}, 1.0e5, 1.0e6, 0.1, 0.0, 0, 0,
-       {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}},
+       {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, DM_MOTION_PLANAR},
       {sizeof(dm_body_desc), "wall", wall, 8, faces, 12, 0.0, {0, 0, 0}, 0.0, 0.0, 0.1, 0.0, 1, 1,
-       {{2.76, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}}};
+       {{2.76, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, DM_MOTION_DEFAULT}};
   dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
   dm_world* w = NULL;
   double dv[3];
