@@ -48,9 +48,9 @@ void IntegrateRigidBody(const BodyModel& model, MotionModel motion, const Vec3& 
   // Euler angles from the body rates (spec §8 DCM sequence)
   const Vec3 rates = EulerRates(s->roll, s->pitch, s->omega);
   if (motion == MotionModel::kPlanar) {
-    // roll and pitch held: the body turns about the earth vertical only, so its rates are those of
-    // the yaw rate alone (a host's or an API caller's state may bring roll and pitch rates; + 0.0
-    // keeps a level body's zero rates +0)
+    // spec §8 planar option, roll and pitch held: the body turns about the earth vertical only, so
+    // its rates are those of the yaw rate alone (a host's or an API caller's state may bring roll and
+    // pitch rates; + 0.0 keeps a level body's zero rates +0)
     const Vec3 yaw_axis(-std::sin(s->pitch), std::sin(s->roll) * std::cos(s->pitch), std::cos(s->roll) * std::cos(s->pitch));
     s->omega = yaw_axis * rates.z() + Vec3::Zero();
     s->yaw += rates.z() * dt;

@@ -134,21 +134,31 @@ static void make_box(double lx, double ly, double lz, double v[24], int32_t t[36
   memcpy(t, faces, sizeof faces);
 }
 
-/* force-provider mode: the host integrates a box car into a fixed wall with the loads it gets */
-static void test_force_provider(void) {
+/* a 4.5 m box car of 1500 kg and a fixed rigid wall 1 m thick, 10 m wide, described from arrays */
+typedef struct car_and_wall {
   double car_v[24], wall_v[24];
   int32_t car_t[36], wall_t[36];
-  make_box(4.5, 1.7, 0.8, car_v, car_t);
-  make_box(1.0, 10.0, 2.5, wall_v, wall_t);
   dm_body_desc bodies[2];
-  memset(bodies, 0, sizeof bodies);
-  bodies[0] = (dm_body_desc){sizeof(dm_body_desc), "car", car_v, 8, car_t, 12, 1500.0, {400, 2500, 2700},
-                             1.0e5, 1.0e6, 0.1, 0.0, 0, 0, {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 0};
-  bodies[1] = (dm_body_desc){sizeof(dm_body_desc), "wall", wall_v, 8, wall_t, 12, 0.0, {0, 0, 0},
-                             0.0, 0.0, 0.1, 0.0, 1, 1, {{2.76, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, 0};
+} car_and_wall;
+
+/* the car starts in `car` with the given motion; the wall's centre is at x = wall_x */
+static void make_car_and_wall(car_and_wall* s, dm_body_state car, double wall_x, int32_t motion) {
+  make_box(4.5, 1.7, 0.8, s->car_v, s->car_t);
+  make_box(1.0, 10.0, 2.5, s->wall_v, s->wall_t);
+  memset(s->bodies, 0, sizeof s->bodies);
+  s->bodies[0] = (dm_body_desc){sizeof(dm_body_desc), "car", s->car_v, 8, s->car_t, 12, 1500.0, {400, 2500, 2700},
+                                1.0e5, 1.0e6, 0.1, 0.0, 0, 0, car, motion};
+  s->bodies[1] = (dm_body_desc){sizeof(dm_body_desc), "wall", s->wall_v, 8, s->wall_t, 12, 0.0, {0, 0, 0}, 0.0, 0.0,
+                                0.1, 0.0, 1, 1, {{wall_x, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, DM_MOTION_DEFAULT};
+}
+
+/* force-provider mode: the host integrates a box car into a fixed wall with the loads it gets */
+static void test_force_provider(void) {
+  car_and_wall s;
+  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
   dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
   dm_world* w = NULL;
-  CHECK(dm_world_create(&desc, bodies, 2, &w) == DM_OK);
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
   if (!w) return;
   dm_body_state states[2];
   dm_loads loads[2];
@@ -177,21 +187,13 @@ static void test_force_provider(void) {
 /* the final state of a box car coasting clear of a fixed wall (no contact), set off at 1 m/s along x,
    0.2 m/s down and pitching at 0.5 rad/s; its description `struct_size` bytes long, with `motion` */
 static dm_body_state coast(size_t struct_size, int32_t motion) {
-  double car_v[24], wall_v[24];
-  int32_t car_t[36], wall_t[36];
-  make_box(4.5, 1.7, 0.8, car_v, car_t);
-  make_box(1.0, 10.0, 2.5, wall_v, wall_t);
-  dm_body_desc bodies[2];
-  memset(bodies, 0, sizeof bodies);
-  bodies[0] = (dm_body_desc){sizeof(dm_body_desc), "car", car_v, 8, car_t, 12, 1500.0, {400, 2500, 2700},
-                             1.0e5, 1.0e6, 0.1, 0.0, 0, 0, {{0, 0, 0}, 0, 0, 0, {1.0, 0, 0.2}, {0, 0.5, 0}}, motion};
-  bodies[1] = (dm_body_desc){sizeof(dm_body_desc), "wall", wall_v, 8, wall_t, 12, 0.0, {0, 0, 0},
-                             0.0, 0.0, 0.1, 0.0, 1, 1, {{20.0, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, 0};
+  car_and_wall s;
+  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {1.0, 0, 0.2}, {0, 0.5, 0}}, 20.0, motion);
   /* an older caller's array: elements struct_size bytes apart */
   unsigned char packed[2 * sizeof(dm_body_desc)];
   for (int i = 0; i < 2; ++i) {
-    bodies[i].struct_size = struct_size;
-    memcpy(packed + i * struct_size, &bodies[i], struct_size);
+    s.bodies[i].struct_size = struct_size;
+    memcpy(packed + i * struct_size, &s.bodies[i], struct_size);
   }
   dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.1, 0, 2};
   dm_body_state end;
