@@ -699,8 +699,12 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     const double gap = !hit ? free_gap : std::max((inside ? receding : -hit->depth) - sprung, 0.0);
     const double available = std::max(deflection - (1.0 - e) * s.delta_max[v], 0.0);
     const double spring = std::min(gap, available);
+    // spec §6: the spring runs back along the crush; it meets the face only if it runs toward it (the
+    // crush has a part along the face's outward normal): a node springing along a face 0.2 in beside
+    // it stays off it and carries no rebound force
+    const bool toward = hit && delta.dot(normal_slave) > kMinFacing * deflection;
     delta *= (deflection - spring) / deflection;
-    touching = hit && gap <= available;
+    touching = toward && gap <= available;
   }
 
   // NaN guard: a non-finite update is counted and dropped
