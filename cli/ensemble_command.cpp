@@ -34,7 +34,7 @@ void ParseShard(const std::string& text, int* shard, int* shards) {
   char slash = 0;
   std::istringstream in(text);
   if (!(in >> k >> slash >> n) || slash != '/' || n < 1 || k < 1 || k > n || !in.eof())
-    throw InputError("--shard", "--shard", "expected K/N with 1 <= K <= N, got \"" + text + "\"");
+    throw InputError("command line", "--shard", "expected K/N with 1 <= K <= N, got \"" + text + "\"");
   *shard = k, *shards = n;
 }
 

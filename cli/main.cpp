@@ -3,8 +3,10 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 
@@ -108,7 +110,15 @@ int main(int argc, char** argv) {
   ensemble->add_option("--shard", ens.shard, "K/N: run every N-th sample from the K-th (Slurm arrays, GNU parallel)");
   ensemble->add_option("--sample-time-limit", ens.sample_time_limit,
                        "seconds (wall clock) a sample may run; over it the sample is recorded as timed_out and a resume runs it again")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            // a finite number of seconds (NaN passes a plain range check)
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            const bool ok = end != text.c_str() && *end == '\0' && std::isfinite(v) && v > 0.0 && v <= 1e7;
+            return ok ? std::string() : "expected a number of seconds > 0 and at most 1e7, got " + text;
+          },
+          "SECONDS"));
   ensemble->add_flag("-q,--quiet", ens.quiet, "no progress lines");
   int replay_index = -1;
   std::string replay_spec, replay_out = "replay", merge_spec, merge_out = "ensemble";

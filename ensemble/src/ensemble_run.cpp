@@ -99,6 +99,11 @@ void WriteResults(const Spec& spec, const std::map<int, SampleRecord>& records, 
 }  // namespace
 
 Spec WithSamples(Spec spec, int samples) {
+  // a grid, one-at-a-time or table design has its own rows: fewer is a prefix, more do not exist
+  const bool deterministic = spec.design == Design::kGrid || spec.design == Design::kOneAtATime || spec.design == Design::kTable;
+  if (deterministic && samples > spec.samples)
+    throw InputError(spec.file, "--samples", "this design has " + std::to_string(spec.samples) + " samples; expected at most that, got " +
+                                             std::to_string(samples));
   // Saltelli counts rows of A and B
   if (spec.design == Design::kSaltelli) {
     if (samples == spec.base_samples) return spec;
@@ -363,6 +368,10 @@ RunCounts RunEnsembleMpi(const Spec& spec, const RunOptions& options, int rank, 
 void MergeShards(const Spec& spec, const std::vector<std::string>& shard_dirs, const std::string& out_dir) {
   std::map<int, SampleRecord> records;
   for (const std::string& shard : shard_dirs) {
+    // a shard is a folder an ensemble wrote: a typo is refused, not merged as an empty shard
+    std::error_code error;
+    if (!fs::is_regular_file(fs::path(shard) / kSamplesName, error))
+      throw InputError(shard, kSamplesName, "missing: expected a shard folder holding samples.jsonl");
     std::map<int, SampleRecord> part;
     ReadRecords(spec, fs::path(shard) / kSamplesName, &part);
     for (auto& [index, r] : part)

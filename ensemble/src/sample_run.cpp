@@ -153,6 +153,12 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
   const Json j = Json::parse(line, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("index") || !j.contains("status")) return false;
   if (j.value("spec_hash", "") != HashText(spec.hash)) return false;
+  // a status this engine writes (a record edited by hand, or from another engine, is not one)
+  const Json& status = j["status"];
+  bool known = false;
+  for (const char* s : {"complete", "ended_in_contact", "interrupted", "failed_numerics", "failed_input", kTimedOut})
+    known = known || (status.is_string() && status.get<std::string>() == s);
+  if (!known || !j["index"].is_number_integer()) return false;
   out->index = j["index"].get<int>();
   out->status = j["status"].get<std::string>();
   out->line = line;

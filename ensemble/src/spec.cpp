@@ -11,6 +11,7 @@
 
 #include "dymesh/core/scenario.h"
 #include "dymesh/ensemble/random_stream.h"
+#include "dymesh/ensemble/sample_run.h"
 #include "dymesh/ensemble/sobol_sequence.h"
 #include "dymesh/io/scenario_json.h"
 
@@ -34,6 +35,23 @@ struct Reader {
     if (!j.is_number() || !std::isfinite(j.get<double>())) Fail(field, "expected a finite number, got " + j.dump());
     return j.get<double>();
   }
+  // an object holding only the keys listed
+  void Only(const Json& object, const std::string& field, std::initializer_list<const char*> allowed) const {
+    if (!object.is_object()) Fail(field, "expected an object, got " + object.dump());
+    for (const auto& item : object.items()) {
+      bool known = false;
+      std::string list;
+      for (const char* key : allowed) {
+        known = known || item.key() == key;
+        list += std::string(list.empty() ? "" : ", ") + key;
+      }
+      if (!known) Fail(field + "." + item.key(), "unknown key; allowed keys: " + list);
+    }
+  }
+  const Json& Array(const Json& j, const std::string& field, const char* what) const {
+    if (!j.is_array()) Fail(field, std::string("expected an array of ") + what + ", got " + j.dump());
+    return j;
+  }
 };
 
 std::string ReadText(const std::string& path, const std::string& spec_file, const std::string& field) {
@@ -45,21 +63,32 @@ std::string ReadText(const std::string& path, const std::string& spec_file, cons
   return text.str();
 }
 
-// bodies[0].initial.speed -> /bodies/0/initial/speed
+// bodies[0].initial.speed -> /bodies/0/initial/speed: keys joined by '.', each followed by any
+// number of [index] (digits); nothing else
 std::string PointerOf(const Reader& r, const std::string& path, const std::string& field) {
+  const std::string expected = "expected a JSON path into the scenario such as bodies[0].initial.speed, got \"" + path + "\"";
   std::string pointer;
-  std::string token;
-  for (std::size_t i = 0; i <= path.size(); ++i) {
-    const char c = i < path.size() ? path[i] : '.';
-    if (c == '.' || c == '[' || c == ']') {
-      if (!token.empty()) pointer += "/" + token;
-      token.clear();
-      continue;
+  std::size_t i = 0;
+  while (true) {
+    // a key: letters, digits and underscores
+    const std::size_t start = i;
+    while (i < path.size() && (std::isalnum(static_cast<unsigned char>(path[i])) || path[i] == '_')) ++i;
+    if (i == start) r.Fail(field, expected);
+    pointer.push_back('/');
+    pointer.append(path, start, i - start);
+    // its indices
+    while (i < path.size() && path[i] == '[') {
+      const std::size_t digits = ++i;
+      while (i < path.size() && std::isdigit(static_cast<unsigned char>(path[i]))) ++i;
+      if (i == digits || i - digits > 6 || i >= path.size() || path[i] != ']') r.Fail(field, expected);
+      pointer.push_back('/');
+      pointer.append(std::to_string(std::stoi(path.substr(digits, i - digits))));
+      ++i;
     }
-    token += c;
+    if (i == path.size()) return pointer;
+    if (path[i] != '.') r.Fail(field, expected);
+    ++i;
   }
-  if (pointer.empty()) r.Fail(field, "expected a JSON path into the scenario such as bodies[0].initial.speed");
-  return pointer;
 }
 
 // one distribution: {"KIND": {parameters}}
@@ -70,6 +99,15 @@ Distribution ParseDistribution(const Reader& r, const Json& j, const std::string
   const std::string kind = j.begin().key();
   const Json& p = j.begin().value();
   const std::string at = field + "." + kind;
+  if (kind != "fixed") {
+    if (kind == "uniform") r.Only(p, at, {"low", "high"});
+    else if (kind == "normal") r.Only(p, at, {"mean", "sd", "value", "band95"});
+    else if (kind == "truncated_normal") r.Only(p, at, {"mean", "sd", "value", "band95", "low", "high"});
+    else if (kind == "triangular" || kind == "pert") r.Only(p, at, {"low", "mode", "high"});
+    else if (kind == "lognormal") r.Only(p, at, {"median", "sigma"});
+    else if (kind == "beta") r.Only(p, at, {"alpha", "beta", "low", "high"});
+    else if (kind == "discrete") r.Only(p, at, {"values", "weights"});
+  }
   auto num = [&](const char* key) { return r.Number(r.Require(p, at, key), at + "." + key); };
   Distribution d;
   if (kind == "fixed") {
@@ -108,15 +146,25 @@ Distribution ParseDistribution(const Reader& r, const Json& j, const std::string
     d.kind = DistributionKind::kDiscrete;
     const Json& values = r.Require(p, at, "values");
     if (!values.is_array() || values.empty()) r.Fail(at + ".values", "expected a non-empty array of numbers");
+    if (p.contains("weights") && (!p["weights"].is_array() || p["weights"].size() != values.size()))
+      r.Fail(at + ".weights", "expected an array of " + std::to_string(values.size()) + " weights, one per value");
     double total = 0.0;
     for (std::size_t i = 0; i < values.size(); ++i) {
       d.values.push_back(r.Number(values[i], at + ".values[" + std::to_string(i) + "]"));
-      const double w = p.contains("weights") ? r.Number(p["weights"].at(i), at + ".weights[" + std::to_string(i) + "]") : 1.0;
+      const double w = p.contains("weights") ? r.Number(p["weights"][i], at + ".weights[" + std::to_string(i) + "]") : 1.0;
       if (!(w > 0.0)) r.Fail(at + ".weights[" + std::to_string(i) + "]", "expected a weight > 0");
       d.cumulative.push_back(total += w);
     }
   } else {
     r.Fail(field, "unknown distribution \"" + kind + "\"");
+  }
+  // every draw a finite number: parameters at the edge of double range, or a truncation window
+  // beyond the normal's reach, leave none
+  for (double u : {1e-12, 1e-6, 0.5, 1.0 - 1e-6, 1.0 - 1e-12}) {
+    const double x = Quantile(d, u);
+    const bool inside = d.kind != DistributionKind::kTruncatedNormal || (x >= d.c && x <= d.d);
+    if (!std::isfinite(x) || !inside || !std::isfinite(Mean(d)))
+      r.Fail(at, "these parameters give draws that are not finite numbers (or, truncated, none inside the window)");
   }
   return d;
 }
@@ -131,6 +179,7 @@ void CheckBounds(const Reader& r, const Input& in, const std::string& field) {
 
 Input ParseInput(const Reader& r, const Json& j, const Json& scenario, const std::string& field) {
   Input in;
+  r.Only(j, field, {"name", "path", "distribution", "bounds", "levels"});
   const Json& name = r.Require(j, field, "name");
   if (!name.is_string() || name.get<std::string>().empty()) r.Fail(field + ".name", "expected a non-empty name");
   in.name = name.get<std::string>();
@@ -139,9 +188,14 @@ Input ParseInput(const Reader& r, const Json& j, const Json& scenario, const std
   in.path = path.get<std::string>();
   in.pointer = PointerOf(r, in.path, field + ".path");
   // the path must reach into the scenario: its parent must exist there
+  // the path must reach into the scenario: a number there, or a key to create in an object there
   const Json::json_pointer pointer(in.pointer);
-  if (!scenario.contains(pointer.parent_pointer()))
-    r.Fail(field + ".path", "\"" + in.path + "\" does not lead into the scenario (its parent is missing)");
+  if (!scenario.contains(pointer.parent_pointer()) ||
+      (!scenario.at(pointer.parent_pointer()).is_object() && !scenario.contains(pointer)))
+    r.Fail(field + ".path", "\"" + in.path + "\" does not lead into the scenario (its parent is missing, or an "
+                            "array index is beyond the array's end)");
+  if (scenario.contains(pointer) && !scenario.at(pointer).is_number())
+    r.Fail(field + ".path", "\"" + in.path + "\" leads to " + scenario.at(pointer).dump() + " in the scenario, not a number");
   in.distribution = ParseDistribution(r, r.Require(j, field, "distribution"), field + ".distribution");
   if (j.contains("levels")) {
     const double levels = r.Number(j["levels"], field + ".levels");
@@ -166,6 +220,7 @@ void ParseCrash3(const Reader& r, const Json& list, const Json& scenario, Spec* 
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string at = "crash3[" + std::to_string(i) + "]";
     const Json& j = list[i];
+    r.Only(j, at, {"name", "body", "surface", "width", us ? "weight" : "mass", "b0", "b1"});
     const Json& name = r.Require(j, at, "name");
     if (!name.is_string() || name.get<std::string>().empty()) r.Fail(at + ".name", "expected a non-empty name");
     const double body = r.Number(r.Require(j, at, "body"), at + ".body");
@@ -198,6 +253,7 @@ void ParseCrash3(const Reader& r, const Json& list, const Json& scenario, Spec* 
 
 // "correlation": {"inputs": [names], "rank_matrix": [[...]]}: Spearman correlations, positive definite
 void ParseCorrelation(const Reader& r, const Json& j, Spec* spec) {
+  r.Only(j, "correlation", {"inputs", "rank_matrix"});
   const Json& names = r.Require(j, "correlation", "inputs");
   const Json& matrix = r.Require(j, "correlation", "rank_matrix");
   if (!names.is_array() || names.size() < 2) r.Fail("correlation.inputs", "expected at least two input names");
@@ -206,16 +262,22 @@ void ParseCorrelation(const Reader& r, const Json& j, Spec* spec) {
     int index = -1;
     for (std::size_t k = 0; k < spec->inputs.size(); ++k)
       if (names[a].is_string() && spec->inputs[k].name == names[a].get<std::string>()) index = static_cast<int>(k);
-    if (index < 0) r.Fail("correlation.inputs[" + std::to_string(a) + "]", "expected the name of an input, got " + names[a].dump());
+    const std::string at = "correlation.inputs[" + std::to_string(a) + "]";
+    if (index < 0) r.Fail(at, "expected the name of an input, got " + names[a].dump());
+    for (int earlier : spec->correlation.inputs)
+      if (earlier == index) r.Fail(at, "input \"" + names[a].get<std::string>() + "\" is named twice");
     spec->correlation.inputs.push_back(index);
   }
+  // the shape first, then the values (a symmetric pair reads a row not yet reached)
   if (!matrix.is_array() || static_cast<int>(matrix.size()) != n)
     r.Fail("correlation.rank_matrix", "expected a " + std::to_string(n) + " x " + std::to_string(n) + " matrix");
+  for (int a = 0; a < n; ++a)
+    if (!matrix[a].is_array() || static_cast<int>(matrix[a].size()) != n)
+      r.Fail("correlation.rank_matrix[" + std::to_string(a) + "]", "expected a row of " + std::to_string(n) + " numbers");
   Eigen::MatrixXd pearson(n, n);
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
       const std::string at = "correlation.rank_matrix[" + std::to_string(a) + "][" + std::to_string(b) + "]";
-      if (!matrix[a].is_array() || static_cast<int>(matrix[a].size()) != n) r.Fail(at, "expected a square matrix");
       const double rho = r.Number(matrix[a][b], at);
       if (a == b && rho != 1.0) r.Fail(at, "expected 1 on the diagonal");
       if (std::abs(rho) > 1.0) r.Fail(at, "expected a correlation in [-1, 1]");
@@ -258,6 +320,50 @@ void SizeDeterministicDesign(const Reader& r, const Json& j, Spec* spec) {
     r.Fail("correlation", "a grid, one-at-a-time or table design has no random draws to correlate");
 }
 
+// "BODY.QUANTITY": a body of the scenario and a per-body output (or, for evidence, an observable)
+bool IsQuantityOf(const Scenario& scenario, const Json& name, bool observable) {
+  if (!name.is_string()) return false;
+  const std::string text = name.get<std::string>();
+  const std::size_t dot = text.rfind('.');
+  if (dot == std::string::npos) return false;
+  bool body = false;
+  for (const BodySpec& b : scenario.bodies) body = body || b.name == text.substr(0, dot);
+  const std::string q = text.substr(dot + 1);
+  const bool output = q == "delta_v" || q == "pdof_deg" || q == "peak_acceleration_g" || q == "max_crush" || q == "crush_energy";
+  const bool measured = q == "c1" || q == "c2" || q == "c3" || q == "c4" || q == "c5" || q == "c6" || q == "rest_x" ||
+                        q == "rest_y" || q == "rest_heading";
+  return body && (output || (observable && measured));
+}
+
+// every input at its median, then each alone at its extremes (within its bounds): the scenario
+// must take them, so that a path or a distribution it cannot take is refused before any sample runs
+void TrySampleScenarios(const Reader& r, const Spec& spec) {
+  const std::size_t k = spec.inputs.size();
+  auto clamp = [&](std::size_t i, double u) {
+    return std::clamp(Quantile(spec.inputs[i].distribution, u), spec.inputs[i].low, spec.inputs[i].high);
+  };
+  std::vector<double> median(k);
+  for (std::size_t i = 0; i < k; ++i) median[i] = clamp(i, 0.5);
+  auto attempt = [&](const std::vector<double>& values, std::size_t i) {
+    try {
+      SampleScenario(spec, values);
+    } catch (const InputError& e) {
+      const std::string value = i < k ? " = " + Json(values[i]).dump() : "";
+      const std::string which = i == k                       ? "inputs (each at its median)"
+                                : spec.inputs[i].pointer.empty() ? "crash3 input \"" + spec.inputs[i].name + "\"" + value
+                                                                 : "inputs[" + std::to_string(i) + "] (\"" + spec.inputs[i].name + "\"" + value + ")";
+      r.Fail(which, "the scenario refuses this sample: " + std::string(e.what()));
+    }
+  };
+  attempt(median, k);
+  for (std::size_t i = 0; i < k; ++i)
+    for (double u : {1e-6, 1.0 - 1e-6}) {
+      std::vector<double> values = median;
+      values[i] = clamp(i, u);
+      attempt(values, i);
+    }
+}
+
 }  // namespace
 
 std::string HashText(std::uint64_t hash) {
@@ -290,7 +396,7 @@ Spec LoadSpec(const std::string& path) {
   if (base.is_relative()) base = fs::absolute(fs::path(path)).parent_path() / base;
   spec.scenario_file = base.lexically_normal().string();
   spec.scenario_text = ReadText(spec.scenario_file, path, "scenario");
-  LoadScenario(spec.scenario_file);  // the base must be valid on its own
+  const Scenario base_scenario = LoadScenario(spec.scenario_file);  // the base must be valid on its own
   const Json scenario_json = Json::parse(spec.scenario_text);
   // inputs, design, size, seed, thresholds
   const Json& inputs = r.Require(j, "", "inputs");
@@ -299,8 +405,12 @@ Spec LoadSpec(const std::string& path) {
     spec.inputs.push_back(ParseInput(r, inputs[i], scenario_json, "inputs[" + std::to_string(i) + "]"));
   if (j.contains("crash3")) ParseCrash3(r, j["crash3"], scenario_json, &spec);
   for (std::size_t a = 0; a < spec.inputs.size(); ++a)
-    for (std::size_t b = 0; b < a; ++b)
+    for (std::size_t b = 0; b < a; ++b) {
       if (spec.inputs[a].name == spec.inputs[b].name) r.Fail("inputs", "duplicate input name \"" + spec.inputs[a].name + "\"");
+      if (!spec.inputs[a].pointer.empty() && spec.inputs[a].pointer == spec.inputs[b].pointer)
+        r.Fail("inputs[" + std::to_string(a) + "].path", "\"" + spec.inputs[a].path + "\" is already set by inputs[" +
+                                                             std::to_string(b) + "]");
+    }
   if (j.contains("correlation")) ParseCorrelation(r, j["correlation"], &spec);
   if (j.contains("design")) {
     const std::string d = j["design"].is_string() ? j["design"].get<std::string>() : "";
@@ -325,11 +435,14 @@ Spec LoadSpec(const std::string& path) {
     spec.seed = static_cast<std::uint64_t>(s);
   }
   if (j.contains("thresholds"))
-    for (std::size_t i = 0; i < j["thresholds"].size(); ++i) {
+    for (std::size_t i = 0; i < r.Array(j["thresholds"], "thresholds", "thresholds").size(); ++i) {
       const std::string at = "thresholds[" + std::to_string(i) + "]";
       const Json& t = j["thresholds"][i];
+      r.Only(t, at, {"output", "above"});
       const Json& output = r.Require(t, at, "output");
-      if (!output.is_string()) r.Fail(at + ".output", "expected an output name such as \"p406.delta_v\"");
+      if (!IsQuantityOf(base_scenario, output, false))
+        r.Fail(at + ".output", "expected BODY.QUANTITY with a body of the scenario and one of delta_v, pdof_deg, "
+                               "peak_acceleration_g, max_crush, crush_energy, got " + output.dump());
       spec.thresholds.push_back({output.get<std::string>(), r.Number(r.Require(t, at, "above"), at + ".above")});
     }
   if (j.contains("evidence")) {
@@ -337,9 +450,11 @@ Spec LoadSpec(const std::string& path) {
     for (std::size_t i = 0; i < j["evidence"].size(); ++i) {
       const std::string at = "evidence[" + std::to_string(i) + "]";
       const Json& e = j["evidence"][i];
+      r.Only(e, at, {"observable", "value", "sd"});
       const Json& observable = r.Require(e, at, "observable");
-      if (!observable.is_string() || observable.get<std::string>().find('.') == std::string::npos)
-        r.Fail(at + ".observable", "expected BODY.QUANTITY, e.g. \"p406.delta_v\" or \"p406.c3\"");
+      if (!IsQuantityOf(base_scenario, observable, true))
+        r.Fail(at + ".observable", "expected BODY.QUANTITY with a body of the scenario and an output, c1..c6, rest_x, "
+                                   "rest_y or rest_heading, e.g. \"p406.delta_v\" or \"p406.c3\", got " + observable.dump());
       const double sd = r.Number(r.Require(e, at, "sd"), at + ".sd");
       if (!(sd > 0.0)) r.Fail(at + ".sd", "expected a standard deviation > 0");
       spec.evidence.push_back({observable.get<std::string>(), r.Number(r.Require(e, at, "value"), at + ".value"), sd});
@@ -347,6 +462,7 @@ Spec LoadSpec(const std::string& path) {
   }
   if (j.contains("stop_tolerance")) {
     const Json& t = j["stop_tolerance"];
+    r.Only(t, "stop_tolerance", {"relative", "min_samples"});
     spec.stop_relative = r.Number(r.Require(t, "stop_tolerance", "relative"), "stop_tolerance.relative");
     const double m = t.contains("min_samples") ? r.Number(t["min_samples"], "stop_tolerance.min_samples")
                                                : kDefaultStopMinSamples;
@@ -368,6 +484,7 @@ Spec LoadSpec(const std::string& path) {
     spec.base_samples = spec.samples;
     spec.samples = spec.base_samples * (static_cast<int>(spec.inputs.size()) + 2);
   }
+  TrySampleScenarios(r, spec);
   // the hash covers what the samples depend on: the spec itself and the base scenario's text
   spec.hash = TextHash(j.dump() + "\n" + spec.scenario_text);
   return spec;

@@ -368,9 +368,13 @@ std::string InUnits(double si, InputUnit u, bool exact = true) {
 
 // refuses an impossible value, warns on an implausible one; `si` is the converted value
 void CheckPhysical(const Source& src, const std::string& field, double si, const PhysicalRange& r, InputUnit u) {
-  if (si < r.hard_lo || si > r.hard_hi)
+  if (si < r.hard_lo || si > r.hard_hi) {
+    // the value to 4 digits, unless so rounded it would read as inside the range
+    const double shown = std::strtod(InUnits(si, u, false).c_str(), nullptr) * u.per_unit;
+    const bool looks_inside = shown >= r.hard_lo && shown <= r.hard_hi;
     Fail(src, field, std::string("expected a physically possible ") + r.what + " in " + InUnits(r.hard_lo, u, false) +
-                         " .. " + InUnits(r.hard_hi, u, false) + ", got " + InUnits(si, u, false));
+                         " .. " + InUnits(r.hard_hi, u, false) + ", got " + InUnits(si, u, looks_inside));
+  }
   if ((si < r.lo || si > r.hi) && src.warnings != nullptr)
     src.warnings->push_back({"implausible_value", field,
                              std::string(r.what) + " " + InUnits(si, u) + " is outside the range met in vehicle "
@@ -390,10 +394,15 @@ constexpr PhysicalRange kBoxRange{1e-3, 1000.0, 0.01, 30.0, "box size"};        
 constexpr PhysicalRange kGyrationRange{0.01, 100.0, 0.1, 15.0, "radius of gyration sqrt(inertia / mass)"};  // [m]
 constexpr PhysicalRange kFrictionRange{0.0, 10.0, 0.0, 1.5, "friction coefficient"};
 constexpr PhysicalRange kDurationRange{0.0, 1e4, 0.0, 10.0, "duration [s]"};
+constexpr PhysicalRange kGapRange{0.0, 1e3, 0.0, 10.0, "gap"};  // [m] between bodies placed at contact
 // 3-D stiffness (SI): published A up to ~1000 lb/in and B up to ~1000 lb/in^2 over a 30 in
 // conversion height are ~2.3e5 N/m^2 and ~9e6 N/m^3; rigid-wall stand-ins go higher
 constexpr PhysicalRange kStiffnessARange{0.0, 1e15, 0.0, 1e7, "3-D stiffness A [N/m^2]"};
 constexpr PhysicalRange kStiffnessBRange{0.0, 1e15, 0.0, 1e9, "3-D stiffness B [N/m^3]"};
+// the rebound slope Ku: steeper than loading, within the same order of reach
+constexpr PhysicalRange kUnloadSlopeRange{0.0, 1e16, 0.0, 1e10, "unloading slope Kv [N/m^3]"};
+// 2-D coefficients are spread over a height of structure: CRASH3 uses 10-40 in
+constexpr PhysicalRange kConversionHeightRange{0.01, 10.0, 0.1, 2.0, "conversion height"};  // [m]
 
 // a relative path resolved against the folder of the file that names it, made absolute
 std::string ResolvePath(const Source& src, const std::string& name) {
@@ -473,7 +482,7 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
   if (const Json* v = Find(j, "specified_direction")) {
     const std::string field = Join(path, "specified_direction");
     const Vec3 d = ReadVec3(src, *v, field, kAnyFinite);
-    if (!(d.norm() > 0.0)) Fail(src, field, "expected a nonzero vector, got [0, 0, 0]");
+    if (!(d.norm() > 0.0)) Fail(src, field, "expected a vector of nonzero length, got " + FormatDouble(d.x()) + ", " + FormatDouble(d.y()) + ", " + FormatDouble(d.z()));
     o->specified_direction = d.normalized();
   }
   // lengths (>= 0; the search depths > 0)
@@ -483,12 +492,20 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
       {"unload_pot", &o->unload_pot},         {"unload_stop", &o->unload_stop},
       {"max_grow_unload", &o->max_grow_unload}, {"contact_tolerance", &o->contact_tolerance},
       {"global_search_box", &o->global_search_box}};
-  for (const auto& [key, target] : lengths)
-    if (const Json* v = Find(j, key)) *target = ReadNumber(src, *v, Join(path, key), kNonNegative) * length;
-  if (const Json* v = Find(j, "toofar_maximum"))
-    o->toofar_maximum = ReadNumber(src, *v, Join(path, "toofar_maximum"), kPositive) * length;
-  if (const Json* v = Find(j, "search_backoff"))
-    o->search_backoff = ReadNumber(src, *v, Join(path, "search_backoff"), kPositive) * length;
+  // a tuning length is a fraction of a vehicle: beyond 10 m the search rays leave float range
+  constexpr double kMaxTuningLength = 10.0;  // [m]
+  auto read_length = [&](const char* key, const Range& range, double* target) {
+    const Json* v = Find(j, key);
+    if (v == nullptr) return;
+    const double si = ReadNumber(src, *v, Join(path, key), range) * length;
+    if (si > kMaxTuningLength)
+      Fail(src, Join(path, key), "expected a length of at most " + InUnits(kMaxTuningLength, LengthUnit(src), false) +
+                                     ", got " + Describe(*v));
+    *target = si;
+  };
+  for (const auto& [key, target] : lengths) read_length(key, kNonNegative, target);
+  read_length("toofar_maximum", kPositive, &o->toofar_maximum);
+  read_length("search_backoff", kPositive, &o->search_backoff);
   // fraction and speed
   if (const Json* v = Find(j, "pushback_reduction"))
     o->pushback_reduction = ReadNumber(src, *v, Join(path, "pushback_reduction"), kUnitIntervalOpen);
@@ -615,8 +632,10 @@ Stiffness ParseSurfaceStiffness(const Source& src, const Json& j, const std::str
     const double a = number("A", kNonNegative, u.StiffnessPow(1));
     const double b = number("B", kNonNegative, u.StiffnessPow(2));
     double height = kDefaultConversionHeight;
-    if (const Json* v = Find(j, "conversion_height"))
+    if (const Json* v = Find(j, "conversion_height")) {
       height = ReadNumber(src, *v, Join(path, "conversion_height"), kPositive) * u.length;
+      CheckPhysical(src, Join(path, "conversion_height"), height, kConversionHeightRange, LengthUnit(src));
+    }
     k = StiffnessFrom2D(a, b, height);
   } else {
     // 3-D coefficients per area
@@ -631,6 +650,7 @@ Stiffness ParseSurfaceStiffness(const Source& src, const Json& j, const std::str
   k.sat_crush = number("sat_crush", kNonNegative, u.length);
   k.max_crush = number("max_crush", kNonNegative, u.length);
   k.unload_slope = number("Kv", kNonNegative, u.StiffnessPow(3));
+  if (Find(j, "Kv")) CheckPhysical(src, Join(path, "Kv"), k.unload_slope, kUnloadSlopeRange, kPlain);
   return k;
 }
 
@@ -793,7 +813,10 @@ std::optional<PlacementRequest> ParsePlaceAtContact(const Source& src, const Jso
   CheckKeys(src, *j, field, {"with", "gap"});
   PlacementRequest r;
   r.with = ReadString(src, Require(src, *j, field, "with"), Join(field, "with"));
-  if (const Json* v = Find(*j, "gap")) r.gap = ReadNumber(src, *v, Join(field, "gap"), kNonNegative) * src.units.length;
+  if (const Json* v = Find(*j, "gap")) {
+    r.gap = ReadNumber(src, *v, Join(field, "gap"), kNonNegative) * src.units.length;
+    CheckPhysical(src, Join(field, "gap"), r.gap, kGapRange, LengthUnit(src));
+  }
   return r;
 }
 
@@ -819,6 +842,9 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   body.mesh = *fields.mesh;
   // motion, then mass (only a fixed body may go without)
   body.motion = fields.motion.value_or(MotionModel::kPlanar);
+  // a fixed body does not move: a speed given to it would be dropped and break the energy account
+  if (body.motion == MotionModel::kFixed && (body.initial.velocity.norm() > 0.0 || body.initial.omega.norm() > 0.0))
+    Fail(src, Join(path, "initial"), "a body with motion \"fixed\" does not move: expected no speed, velocity or yaw_rate");
   if (!fields.mass && body.motion != MotionModel::kFixed)
     Fail(src, Join(path, "mass"), "missing: give mass or weight (only a body with motion \"fixed\" may omit both)");
   body.mass = fields.mass.value_or(0.0);

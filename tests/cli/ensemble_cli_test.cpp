@@ -102,6 +102,11 @@ TEST_F(Ensemble, ThreeShardsMergedEqualOneRun) {
   const ProcessResult missing = Dymesh({"ensemble", "merge", spec, "--out", (dir_ / "m2").string(), merge[5], merge[6]});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("sample 2 is in no shard"), std::string::npos) << missing.err;
+  // a shard folder that does not exist (a typo) is refused by name, not merged as an empty shard
+  const std::string typo = (dir_ / "shard9").string();
+  const ProcessResult absent = Dymesh({"ensemble", "merge", spec, "--out", (dir_ / "m3").string(), merge[5], merge[6], merge[7], typo});
+  EXPECT_EQ(absent.exit_code, 2);
+  EXPECT_NE(absent.err.find(typo + ": samples.jsonl: missing"), std::string::npos) << absent.err;
 }
 
 #ifdef DYMESH_MPIEXEC
@@ -263,6 +268,27 @@ TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
        "inputs[2].bounds: the bounds [0.000000, 1.000000] exclude the distribution's support"},
       {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"gamma": {"k": 2}}})",
        "inputs[2].distribution: unknown distribution \"gamma\""},
+      // found by fuzzing (2026-11-24): each used to start the ensemble, crash or end in a raw library message
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"discrete": {"values": [0.1, 0.2, 0.3], "weights": [1, 1]}}})",
+       "inputs[2].distribution.discrete.weights: expected an array of 3 weights, one per value"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"uniform": {"low": -1e308, "high": 1e308}}})",
+       "inputs[2].distribution.uniform: these parameters give draws that are not finite numbers"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"truncated_normal": {"mean": 0, "sd": 0.01, "low": 0.5, "high": 0.6}}})",
+       "inputs[2].distribution.truncated_normal: these parameters give draws that are not finite numbers"},
+      {R"(, {"name": "x", "path": "bodies[0].name", "distribution": {"fixed": 1}})",
+       "inputs[2].path: \"bodies[0].name\" leads to \"box\" in the scenario, not a number"},
+      {R"(, {"name": "x", "path": "bodies[0]..friction", "distribution": {"fixed": 0.1}})",
+       "inputs[2].path: expected a JSON path into the scenario such as bodies[0].initial.speed"},
+      {R"(, {"name": "x", "path": "bodies[0].initial.position[1", "distribution": {"fixed": 0.1}})",
+       "inputs[2].path: expected a JSON path into the scenario such as bodies[0].initial.speed"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"fixed": 0.1}, "bound": [0, 1]})",
+       "inputs[2].bound: unknown key; allowed keys: name, path, distribution, bounds, levels"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"uniform": {"low": 0, "high": 1, "mode": 0.5}}})",
+       "inputs[2].distribution.uniform.mode: unknown key; allowed keys: low, high"},
+      {R"(, {"name": "x", "path": "bodies[0].restitution", "distribution": {"fixed": 0.1}})",
+       "inputs[2].path: \"bodies[0].restitution\" is already set by inputs[1]"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"uniform": {"low": 20, "high": 30}}})",
+       "inputs (each at its median): the scenario refuses this sample: "},
   };
   for (const Case& c : cases) {
     const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 5, "latin_hypercube", c.extra);
@@ -274,6 +300,46 @@ TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
   const ProcessResult missing = Dymesh({"ensemble", (dir_ / "none.json").string(), "--out", (dir_ / "out").string()});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("file not found"), std::string::npos) << missing.err;
+}
+
+// keys beside the inputs, each with a defect fuzzing found (2026-11-24): a segfault (a correlation
+// row left empty), raw library messages (thresholds not an array, a matrix row that is a number), an
+// output no sample has, and --samples beyond a table's rows (read past the table)
+TEST_F(Ensemble, BadSpecKeysAndSampleCountsAreRefusedBeforeAnySample) {
+  struct Case {
+    const char* key;
+    const char* value;
+    std::string message;
+  };
+  const Case cases[] = {
+      {"correlation", R"({"inputs": ["speed", "restitution"], "rank_matrix": [[1, 0.5], []]})",
+       "correlation.rank_matrix[1]: expected a row of 2 numbers"},
+      {"correlation", R"({"inputs": ["speed", "restitution"], "rank_matrix": [[1, 0.5], 0]})",
+       "correlation.rank_matrix[1]: expected a row of 2 numbers"},
+      {"correlation", R"({"inputs": ["speed", "speed"], "rank_matrix": [[1, 0.5], [0.5, 1]]})",
+       "correlation.inputs[1]: input \"speed\" is named twice"},
+      {"thresholds", R"("x")", "thresholds: expected an array of thresholds, got \"x\""},
+      {"thresholds", R"([{"output": "nobody.delta_v", "above": 3}])", "thresholds[0].output: expected BODY.QUANTITY"},
+      {"evidence", R"([{"observable": "box.c7", "value": 3, "sd": 1}])", "evidence[0].observable: expected BODY.QUANTITY"},
+  };
+  for (const Case& c : cases) {
+    const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 5);
+    nlohmann::json j = nlohmann::json::parse(ReadFile(spec));
+    j[c.key] = nlohmann::json::parse(c.value);
+    std::ofstream(spec) << j.dump();
+    const ProcessResult r = Dymesh({"ensemble", spec, "--out", (dir_ / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << c.key << " " << c.value;
+    EXPECT_NE(r.err.find("spec.json: " + c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out" / "samples.journal.jsonl"));
+  }
+  // a table of two rows asked for three samples
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 5, "table");
+  nlohmann::json j = nlohmann::json::parse(ReadFile(spec));
+  j["table"] = {{30, 0.1}, {32, 0.1}};
+  std::ofstream(spec) << j.dump();
+  const ProcessResult r = Dymesh({"ensemble", spec, "--samples", "3", "--out", (dir_ / "out").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("spec.json: --samples: this design has 2 samples; expected at most that, got 3"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -217,6 +217,16 @@ TEST_F(Trust, ImpossibleValuesAreRefusedNamingTheField) {
       {"/bodies/0/initial/position/0", 1e9, "bodies[0].initial.position[0]: expected a physically possible position"},
       {"/bodies/0/friction", 50, "bodies[0].friction: expected a physically possible friction coefficient"},
       {"/bodies/0/mesh/box/length", 1e6, "bodies[0].mesh.box.length: expected a physically possible box size"},
+      // found by fuzzing (2026-11-24): a search length of 1e30 in aborted in Embree (a ray out of float
+      // range); a value just over a bound was shown rounded into the range; Kv, the conversion height
+      // and the placement gap had no range (Kv 1e300 was blamed on time.step)
+      {"/contact/toofar_maximum", 1e30, "contact.toofar_maximum: expected a length of at most 393.7 in, got 1e+30"},
+      {"/contact/search_backoff", 1e30, "contact.search_backoff: expected a length of at most 393.7 in, got 1e+30"},
+      {"/bodies/0/initial/yaw_rate", 36000.4, "bodies[0].initial.yaw_rate: expected a physically possible yaw rate [deg/s] in -3.6e+04 .. 3.6e+04, got 36000.4"},
+      {"/bodies/0/stiffness/default/Kv", 1e300, "bodies[0].stiffness.default.Kv: expected a physically possible unloading slope Kv"},
+      {"/bodies/0/stiffness/default/conversion_height", 1e-9, "bodies[0].stiffness.default.conversion_height: expected a physically possible conversion height"},
+      // a fixed wall given a speed ran with a 97 % energy balance warning
+      {"/bodies/1/initial/speed", 30, "bodies[1].initial: a body with motion \"fixed\" does not move: expected no speed, velocity or yaw_rate"},
   };
   for (const Case& c : cases) {
     Json j = BoxScenario();
@@ -283,6 +293,18 @@ TEST_F(Trust, MeshOfDuplicatedFacesIsRefusedWithTheCount) {
   const ProcessResult r = Run(WithCarMesh("doubled.obj"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Has(r.err, "doubled.obj: bodies[0].mesh: 12 duplicated faces")) << r.err;
+}
+
+TEST_F(Trust, MalformedObjLinesAreRefusedWithTheLine) {
+  // assimp reads "0,1" as 0 and drops a two-vertex face without a word (found by fuzzing, 2026-11-24)
+  Write("comma.obj", "v 0 0 0\nv 0,1 0,2 0,3\nv 0 1 0\nf 1 2 3\n");
+  const ProcessResult comma = Run(WithCarMesh("comma.obj"));
+  EXPECT_EQ(comma.exit_code, 2);
+  EXPECT_TRUE(Has(comma.err, "comma.obj: bodies[0].mesh.file: line 2 (\"v 0,1 0,2 0,3\"): expected a number, got \"0,1\"")) << comma.err;
+  Write("edge.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3\n");
+  const ProcessResult edge = Run(WithCarMesh("edge.obj"));
+  EXPECT_EQ(edge.exit_code, 2);
+  EXPECT_TRUE(Has(edge.err, "edge.obj: bodies[0].mesh.file: line 5 (\"f 1 3\"): expected a face of at least three vertices")) << edge.err;
 }
 
 TEST_F(Trust, SingleOpenTriangleIsRefusedForADeformableBody) {
