@@ -24,6 +24,9 @@ namespace {
 // weld tolerance relative to the bounds diagonal (merges only coincident vertices)
 constexpr double kRelativeWeldTolerance = 1e-9;
 
+// most corners of one OBJ face
+constexpr std::size_t kMaxObjFaceCorners = 1000;
+
 // largest share of a mesh's faces that may repeat another face
 constexpr double kMaxDuplicateFaces = 0.10;
 
@@ -119,6 +122,10 @@ void CheckObjLines(const std::string& path, const std::string& field) {
         if (!IsObjNumber(t)) throw InputError(path, field, at + ": expected a number, got \"" + t + "\"");
     } else if (keyword == "f") {
       if (rest.size() < 3) throw InputError(path, field, at + ": expected a face of at least three vertices");
+      // assimp's triangulation of one polygon is quadratic in its corners (100,000 took 38 s)
+      if (rest.size() > kMaxObjFaceCorners)
+        throw InputError(path, field, at + ": a face of " + std::to_string(rest.size()) + " vertices; expected at most " +
+                                          std::to_string(kMaxObjFaceCorners) + " (triangulate it first)");
       for (const std::string& t : rest)
         if (!IsObjCorner(t)) throw InputError(path, field, at + ": expected a vertex index (v, v/vt, v//vn or v/vt/vn), got \"" + t + "\"");
     }

@@ -4,6 +4,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -52,10 +53,31 @@ void CheckNames(const std::string& dir, const std::vector<std::string>& names) {
                       " (with the temporary suffix): shorten the body name");
 }
 
-// a manifest entry dymesh may remove: a plain name in this folder, never a path
+// a manifest entry dymesh may remove: a plain name in this folder, never a path, of a kind dymesh
+// writes (a manifest edited to name another file does not remove it)
 bool PlainName(const std::string& name) {
-  return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos &&
-         name != kLockFileName && name != kManifestFileName;
+  const std::string extension = fs::path(name).extension().string();
+  const bool ours = extension == ".json" || extension == ".csv" || extension == ".html" || extension == ".obj" ||
+                    extension == ".ply" || extension == ".jsonl";
+  return ours && name != "." && name != ".." && name.find('/') == std::string::npos && name != kLockFileName &&
+         name != kManifestFileName;
+}
+
+// a single run's folder and an ensemble's share report.html: one kind of results per folder, so
+// that neither replaces the other's report and leaves the rest
+void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& outputs) {
+  auto has = [](const std::vector<std::string>& names, const char* name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
+  auto holds = [&](const char* name) {
+    std::error_code ec;
+    return fs::exists(fs::path(dir) / name, ec);
+  };
+  const bool run = has(outputs, "summary.json"), ensemble = has(outputs, "samples.jsonl");
+  if (run && (holds("samples.jsonl") || holds("samples.journal.jsonl") || holds("ensemble.json")))
+    Refuse(dir, "holds an ensemble's results (samples.jsonl, ensemble.json): give another folder for a single run");
+  if (ensemble && holds("summary.json"))
+    Refuse(dir, "holds a single run's results (summary.json): give another folder for an ensemble");
 }
 
 }  // namespace
@@ -65,6 +87,7 @@ OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outp
   EnsureFolder(dir_);
   CheckWritable(dir_);
   CheckNames(dir_, outputs_);
+  RefuseOtherKind(dir_, outputs_);
   // exclusive for the whole run; the kernel releases it if the process dies
   const std::string lock = (fs::path(dir_) / kLockFileName).string();
   lock_fd_ = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);

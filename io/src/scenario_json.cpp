@@ -589,7 +589,7 @@ MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) 
   if (file == nullptr) Fail(src, Join(path, "file"), "missing required key: give \"file\", \"box\" or \"cylinder\"");
   const std::string field = Join(path, "file");
   const std::string name = ReadString(src, *file, field);
-  if (name.empty()) Fail(src, field, "expected a file name, got \"\"");
+  if (name.empty() || name.find('\0') != std::string::npos) Fail(src, field, "expected a file name (no NUL character), got " + Describe(*file));
   mesh.file = ResolvePath(src, name);
   if (const std::string problem = NotARegularFile(mesh.file); !problem.empty())
     Fail(src, field, problem + ": " + mesh.file);
@@ -746,6 +746,8 @@ BodyFields Merge(const BodyFields& base, const BodyFields& over) {
 // a vehicle definition file: its own units, its own paths, errors name it
 BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string& path) {
   const std::string name = ReadString(scenario, j, path);
+  if (name.empty() || name.find('\0') != std::string::npos)
+    Fail(scenario, path, "expected a vehicle file name (no NUL character), got " + Describe(j));
   const std::string file = ResolvePath(scenario, name);
   if (const std::string problem = NotARegularFile(file); !problem.empty())
     Fail(scenario, path, problem + ": " + file);

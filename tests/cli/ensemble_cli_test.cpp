@@ -302,6 +302,24 @@ TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
   EXPECT_NE(missing.err.find("file not found"), std::string::npos) << missing.err;
 }
 
+// a single run and an ensemble share report.html: neither writes into the other's folder (each used
+// to replace the other's report and leave the rest; found by fuzzing, 2026-11-24)
+TEST_F(Ensemble, RunAndEnsembleKeepToTheirOwnFolders) {
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 2);
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "ens").string()}).exit_code, 0);
+  const std::string scenario = std::string(DYMESH_DATA_DIR) + "/scenarios/validation/box_barrier_30mph.json";
+  const std::string ensemble_report = ReadFile(dir_ / "ens" / "report.html");
+  const ProcessResult run = Dymesh({"run", scenario, "--quiet", "--out", (dir_ / "ens").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("ens: --out: holds an ensemble's results"), std::string::npos) << run.err;
+  EXPECT_EQ(ReadFile(dir_ / "ens" / "report.html"), ensemble_report);
+  ASSERT_EQ(Dymesh({"run", scenario, "--quiet", "--out", (dir_ / "single").string()}).exit_code, 0);
+  const ProcessResult ensemble = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "single").string()});
+  EXPECT_EQ(ensemble.exit_code, 2);
+  EXPECT_NE(ensemble.err.find("single: --out: holds a single run's results"), std::string::npos) << ensemble.err;
+  EXPECT_FALSE(fs::exists(dir_ / "single" / "samples.jsonl"));
+}
+
 // keys beside the inputs, each with a defect fuzzing found (2026-11-24): a segfault (a correlation
 // row left empty), raw library messages (thresholds not an array, a matrix row that is a number), an
 // output no sample has, and --samples beyond a table's rows (read past the table)

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -305,6 +306,20 @@ TEST_F(Trust, MalformedObjLinesAreRefusedWithTheLine) {
   const ProcessResult edge = Run(WithCarMesh("edge.obj"));
   EXPECT_EQ(edge.exit_code, 2);
   EXPECT_TRUE(Has(edge.err, "edge.obj: bodies[0].mesh.file: line 5 (\"f 1 3\"): expected a face of at least three vertices")) << edge.err;
+  // one polygon of 1001 corners (assimp's triangulation of 100,000 took 38 s before it was refused)
+  std::string polygon, face = "f";
+  for (int k = 0; k < 1001; ++k) {
+    polygon += "v " + std::to_string(std::cos(k * 0.00628)) + " " + std::to_string(std::sin(k * 0.00628)) + " 0\n";
+    face += " " + std::to_string(k + 1);
+  }
+  Write("polygon.obj", polygon + face + "\n");
+  const ProcessResult big = Run(WithCarMesh("polygon.obj"));
+  EXPECT_EQ(big.exit_code, 2);
+  EXPECT_TRUE(Has(big.err, "a face of 1001 vertices; expected at most 1000 (triangulate it first)")) << big.err;
+  // a NUL inside the file name (JSON allows it) would cut the path short
+  const ProcessResult nul = Run(WithCarMesh(std::string("comma.obj") + '\0' + "x.obj"));
+  EXPECT_EQ(nul.exit_code, 2);
+  EXPECT_TRUE(Has(nul.err, "bodies[0].mesh.file: expected a file name (no NUL character)")) << nul.err;
 }
 
 TEST_F(Trust, SingleOpenTriangleIsRefusedForADeformableBody) {
@@ -395,6 +410,11 @@ TEST_F(Trust, ReusedFolderKeepsOnlyTheNewRunsFilesAndForeignFiles) {
   listed.insert("notes.txt");
   EXPECT_EQ(present, listed);
   EXPECT_EQ(present.count("car_deformed.ply"), 0u);
+  EXPECT_EQ(ReadFile(dir_ / "out" / "notes.txt"), "mine");
+  // a manifest edited to name the user's file does not remove it: dymesh removes only the kinds of
+  // file it writes (found by fuzzing, 2026-11-24)
+  std::ofstream(dir_ / "out" / ".dymesh-manifest", std::ios::app) << "notes.txt\n";
+  ASSERT_EQ(Run(BoxScenario()).exit_code, 0);
   EXPECT_EQ(ReadFile(dir_ / "out" / "notes.txt"), "mine");
 }
 
