@@ -84,6 +84,7 @@ void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& out
 
 OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs)
     : dir_(dir), outputs_(std::move(outputs)) {
+  if (dir_.empty()) throw InputError("command line", "--out", "expected a folder name, got \"\"");
   EnsureFolder(dir_);
   CheckWritable(dir_);
   CheckNames(dir_, outputs_);

@@ -754,12 +754,19 @@ BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string&
   bool ok = false;
   const std::string text = ReadTextFile(file, &ok);
   if (!ok) Fail(scenario, path, "cannot open vehicle file: " + file);
-  const Json root = ParseJson(text, file);
-  Source src{file, fs::path(file).parent_path(), {}, scenario.warnings};
-  ExpectObject(src, root, "");
-  CheckKeys(src, root, "", kVehicleKeys);
-  src.units = ScaleFor(ReadUnits(src, Require(src, root, "", "units"), "units"));
-  return ParseBodyFields(src, root, "");
+  try {
+    const Json root = ParseJson(text, file);
+    Source src{file, fs::path(file).parent_path(), {}, scenario.warnings};
+    ExpectObject(src, root, "");
+    CheckKeys(src, root, "", kVehicleKeys);
+    src.units = ScaleFor(ReadUnits(src, Require(src, root, "", "units"), "units"));
+    return ParseBodyFields(src, root, "");
+  } catch (const InputError& e) {
+    // the error stays the vehicle file's; it also says which scenario body uses that file
+    const std::string what = e.what(), prefix = e.file() + ": " + e.field() + ": ";
+    const std::string message = what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what;
+    throw InputError(e.file(), e.field(), message + " (the vehicle file of " + scenario.file + ": " + path + ")");
+  }
 }
 
 // initial pose and velocities (earth frame, SAE)

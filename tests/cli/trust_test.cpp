@@ -322,6 +322,20 @@ TEST_F(Trust, MalformedObjLinesAreRefusedWithTheLine) {
   EXPECT_TRUE(Has(nul.err, "bodies[0].mesh.file: expected a file name (no NUL character)")) << nul.err;
 }
 
+TEST_F(Trust, VehicleFileErrorSaysWhichScenarioBodyUsesIt) {
+  Write("bad_vehicle.json", R"({"units": "US", "mass": -1})");
+  Json j = BoxScenario();
+  j["bodies"][0]["vehicle"] = "bad_vehicle.json";
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "bad_vehicle.json: mass: expected a number > 0, got -1 (the vehicle file of ")) << r.err;
+  EXPECT_TRUE(Has(r.err, "s.json: bodies[0].vehicle)")) << r.err;
+  // an empty --out names the option
+  const ProcessResult empty = Dymesh({"run", Write("t.json", BoxScenario().dump()), "--quiet", "--out", ""});
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_TRUE(Has(empty.err, "command line: --out: expected a folder name, got \"\"")) << empty.err;
+}
+
 TEST_F(Trust, SingleOpenTriangleIsRefusedForADeformableBody) {
   Write("triangle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   const ProcessResult r = Run(WithCarMesh("triangle.obj"));
