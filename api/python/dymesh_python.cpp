@@ -198,4 +198,15 @@ PYBIND11_MODULE(dymesh, m) {
 
   m.def("load_scenario", [](const std::string& path) { return std::make_unique<Run>(dymesh::LoadScenario(path)); },
         py::arg("path"), "Loads and validates a scenario file and its meshes; returns a Run.");
+  m.def("scenario", [](const py::object& scenario, const std::string& base_dir) {
+          // a dict is the scenario file's JSON; a str its text. Relative mesh and vehicle paths resolve
+          // against base_dir; errors name the field as for a file
+          const std::string text = py::isinstance<py::str>(scenario)
+                                       ? scenario.cast<std::string>()
+                                       : py::module_::import("json").attr("dumps")(scenario).cast<std::string>();
+          return std::make_unique<Run>(dymesh::ParseScenario(text, base_dir + "/(python scenario)"));
+        },
+        py::arg("scenario"), py::arg("base_dir") = ".",
+        "Builds a Run from a scenario given as a dict (or JSON text), laid out as a scenario file: bodies, "
+        "meshes (files, boxes, cylinders), motion, contact options. Relative paths resolve against base_dir.");
 }

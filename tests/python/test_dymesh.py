@@ -57,6 +57,27 @@ class ScenarioRun(unittest.TestCase):
         self.assertAlmostEqual(np.linalg.norm(deformation, axis=1).max(), moved, delta=0.05)
 
 
+class ScenarioFromPython(unittest.TestCase):
+    def test_a_dict_runs_as_its_file_does_and_takes_changes(self):
+        with open(BARRIER, encoding="utf-8") as f:
+            spec = json.load(f)
+        base = os.path.dirname(BARRIER)
+        same = dymesh.scenario(spec, base).run()
+        # byte-identical but for the scenario's name, which is the base folder's "(python scenario)"
+        expected = dymesh.load_scenario(BARRIER).run().summary_json
+        self.assertEqual(same.summary_json.replace("(python scenario)", "barrier_frontal.json"), expected)
+        spec["bodies"][0]["initial"]["speed"] = 20.0
+        slower = dymesh.scenario(json.dumps(spec), base).run()
+        self.assertAlmostEqual(slower.summary["overall"]["closing_speed"], 20.0, delta=0.05)
+
+    def test_a_bad_dict_names_the_field(self):
+        with open(BARRIER, encoding="utf-8") as f:
+            spec = json.load(f)
+        spec["bodies"][0]["motion"] = "flying"
+        with self.assertRaisesRegex(dymesh.InputError, r"bodies\[0\]\.motion"):
+            dymesh.scenario(spec, os.path.dirname(BARRIER))
+
+
 class Errors(unittest.TestCase):
     def test_engine_messages_become_exceptions(self):
         with self.assertRaises(dymesh.InputError) as refused:
