@@ -62,6 +62,7 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, std::ost
 int CheckCommand(const std::string& scenario_path, std::ostream& out) {
   // parse (every field checked), then load and clean every mesh
   Scenario scenario = LoadScenario(scenario_path);
+  RefuseMovingFixedBodies(scenario);
   const auto models = BuildBodyModels(scenario);
   const std::vector<PairPlacement> placements = PlaceBodies(&scenario, models);
   out << scenario.file << ": " << scenario.name << "\n";

@@ -8,9 +8,21 @@
 
 namespace dymesh {
 
+void RefuseMovingFixedBodies(const Scenario& scenario) {
+  // a velocity given to a fixed body would be dropped, and its kinetic energy would break the energy
+  // account
+  for (std::size_t i = 0; i < scenario.bodies.size(); ++i) {
+    const BodySpec& b = scenario.bodies[i];
+    if (b.motion == MotionModel::kFixed && (b.initial.velocity.norm() > 0.0 || b.initial.omega.norm() > 0.0))
+      throw InputError(scenario.file, "bodies[" + std::to_string(i) + "].initial",
+                       "a body with motion \"fixed\" does not move: expected no speed, velocity or yaw_rate");
+  }
+}
+
 Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
                        const LocatorFactory& make_locator)
     : scenario_(scenario) {
+  RefuseMovingFixedBodies(scenario_);
   // bodies placed at contact; an initial overlap refused or warned
   placements_ = PlaceBodies(&scenario_, models);
   std::vector<RigidState> initial;

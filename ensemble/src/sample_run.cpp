@@ -143,7 +143,7 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
     }
   } catch (const std::exception& e) {
     // a refused sample is a record with its reason, never the end of the ensemble
-    RecordNotRun("failed_input", e.what(), &r, &record);
+    RecordNotRun(kFailedInput, e.what(), &r, &record);
   }
   r.line = record.dump();
   return r;
@@ -155,9 +155,9 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
   if (j.value("spec_hash", "") != HashText(spec.hash)) return false;
   // a status this engine writes (a record edited by hand, or from another engine, is not one)
   const Json& status = j["status"];
-  bool known = false;
-  for (const char* s : {"complete", "ended_in_contact", "interrupted", "failed_numerics", "failed_input", kTimedOut})
-    known = known || (status.is_string() && status.get<std::string>() == s);
+  bool known = status == kFailedInput || status == kTimedOut;
+  for (RunStatus s : {RunStatus::kComplete, RunStatus::kEndedInContact, RunStatus::kInterrupted, RunStatus::kFailedNumerics})
+    known = known || status == RunStatusName(s);
   if (!known || !j["index"].is_number_integer()) return false;
   out->index = j["index"].get<int>();
   out->status = j["status"].get<std::string>();
@@ -170,9 +170,9 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
   if (out->status == "complete" && j.contains("bodies")) {
     for (const Json& b : j["bodies"]) {
       const std::string name = b["name"].get<std::string>();
-      for (const char* q : {"delta_v", "pdof_deg", "peak_acceleration_g", "max_crush", "crush_energy"})
+      for (const char* q : kOutputQuantities)
         out->outputs[name + "." + q] = out->observables[name + "." + q] = b[q].get<double>();
-      // what evidence may be measured on: the outputs, the crush profile and the rest position
+      // what evidence may be measured on besides (kMeasuredQuantities): the crush profile and the rest position
       for (int c = 0; c < 6; ++c) out->observables[name + ".c" + std::to_string(c + 1)] = b["c"][c].get<double>();
       out->observables[name + ".rest_x"] = b["final_position"][0].get<double>();
       out->observables[name + ".rest_y"] = b["final_position"][1].get<double>();

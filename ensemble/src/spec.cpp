@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -39,13 +40,10 @@ struct Reader {
   void Only(const Json& object, const std::string& field, std::initializer_list<const char*> allowed) const {
     if (!object.is_object()) Fail(field, "expected an object, got " + object.dump());
     for (const auto& item : object.items()) {
-      bool known = false;
+      if (std::find(allowed.begin(), allowed.end(), item.key()) != allowed.end()) continue;
       std::string list;
-      for (const char* key : allowed) {
-        known = known || item.key() == key;
-        list += std::string(list.empty() ? "" : ", ") + key;
-      }
-      if (!known) Fail(field + "." + item.key(), "unknown key; allowed keys: " + list);
+      for (const char* key : allowed) list += std::string(list.empty() ? "" : ", ") + key;
+      Fail(field + "." + item.key(), "unknown key; allowed keys: " + list);
     }
   }
   const Json& Array(const Json& j, const std::string& field, const char* what) const {
@@ -159,13 +157,10 @@ Distribution ParseDistribution(const Reader& r, const Json& j, const std::string
     r.Fail(field, "unknown distribution \"" + kind + "\"");
   }
   // every draw a finite number: parameters at the edge of double range, or a truncation window
-  // beyond the normal's reach, leave none
-  for (double u : {1e-12, 1e-6, 0.5, 1.0 - 1e-6, 1.0 - 1e-12}) {
-    const double x = Quantile(d, u);
-    const bool inside = d.kind != DistributionKind::kTruncatedNormal || (x >= d.c && x <= d.d);
-    if (!std::isfinite(x) || !inside || !std::isfinite(Mean(d)))
-      r.Fail(at, "these parameters give draws that are not finite numbers (or, truncated, none inside the window)");
-  }
+  // beyond the normal's reach (its probability rounds to 0), leave none
+  bool finite = std::isfinite(Mean(d));
+  for (double u : {1e-12, 1e-6, 0.5, 1.0 - 1e-6, 1.0 - 1e-12}) finite = finite && std::isfinite(Quantile(d, u));
+  if (!finite) r.Fail(at, "these parameters give draws that are not finite numbers");
   return d;
 }
 
@@ -329,10 +324,8 @@ bool IsQuantityOf(const Scenario& scenario, const Json& name, bool observable) {
   bool body = false;
   for (const BodySpec& b : scenario.bodies) body = body || b.name == text.substr(0, dot);
   const std::string q = text.substr(dot + 1);
-  const bool output = q == "delta_v" || q == "pdof_deg" || q == "peak_acceleration_g" || q == "max_crush" || q == "crush_energy";
-  const bool measured = q == "c1" || q == "c2" || q == "c3" || q == "c4" || q == "c5" || q == "c6" || q == "rest_x" ||
-                        q == "rest_y" || q == "rest_heading";
-  return body && (output || (observable && measured));
+  auto among = [&](const auto& names) { return std::find(names.begin(), names.end(), q) != names.end(); };
+  return body && (among(kOutputQuantities) || (observable && among(kMeasuredQuantities)));
 }
 
 // every input at its median, then each alone at its extremes (within its bounds): the scenario

@@ -851,9 +851,6 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   body.mesh = *fields.mesh;
   // motion, then mass (only a fixed body may go without)
   body.motion = fields.motion.value_or(MotionModel::kPlanar);
-  // a fixed body does not move: a speed given to it would be dropped and break the energy account
-  if (body.motion == MotionModel::kFixed && (body.initial.velocity.norm() > 0.0 || body.initial.omega.norm() > 0.0))
-    Fail(src, Join(path, "initial"), "a body with motion \"fixed\" does not move: expected no speed, velocity or yaw_rate");
   if (!fields.mass && body.motion != MotionModel::kFixed)
     Fail(src, Join(path, "mass"), "missing: give mass or weight (only a body with motion \"fixed\" may omit both)");
   body.mass = fields.mass.value_or(0.0);

@@ -242,6 +242,11 @@ static void test_motion(void) {
   bad[1].fixed = 1;
   bad[1].motion = DM_MOTION_FREE;
   CHECK(dm_world_create(&desc, bad, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[1].motion: a fixed body"));
+  /* a fixed body given a velocity: refused as for a scenario file */
+  bad[1].motion = DM_MOTION_DEFAULT;
+  bad[1].initial.velocity[0] = 1.0;
+  CHECK(dm_world_create(&desc, bad, 2, &w) == DM_ERROR_INPUT &&
+        contains(dm_last_error(), "bodies[1].initial: a body with motion \"fixed\" does not move"));
   CHECK(w == NULL);
 }
 

@@ -237,6 +237,12 @@ TEST_F(Trust, ImpossibleValuesAreRefusedNamingTheField) {
     EXPECT_TRUE(Has(r.err, std::string("s.json: ") + c.message)) << c.pointer << "\n" << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
   }
+  // `check` refuses the moving fixed body as `run` does (the rule sits in the core, for every caller)
+  Json moving = BoxScenario();
+  moving["bodies"][1]["initial"]["speed"] = 30;
+  const ProcessResult checked = Dymesh({"check", Write("m.json", moving.dump())});
+  EXPECT_EQ(checked.exit_code, 2);
+  EXPECT_TRUE(Has(checked.err, "m.json: bodies[1].initial: a body with motion \"fixed\" does not move")) << checked.err;
 }
 
 TEST_F(Trust, AbsurdStiffnessIsRefused) {

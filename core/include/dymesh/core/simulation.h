@@ -11,6 +11,10 @@
 /// A self-contained run: bodies, contact engine, rigid-body host and recorded time history.
 namespace dymesh {
 
+/// Throws InputError (field bodies[i].initial) for a body with motion "fixed" given a velocity or
+/// angular rate; every Simulation calls it (scenario files, the C ABI, Python), `dymesh check` too.
+void RefuseMovingFixedBodies(const Scenario& scenario);
+
 /// One recorded instant for one body.
 struct BodySample {
   RigidState rigid;

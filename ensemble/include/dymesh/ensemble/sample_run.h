@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -50,6 +51,15 @@ Scenario SampleScenario(const Spec& spec, const std::vector<double>& values);
 /// Status of a sample that ran over its wall-clock time limit: the one record that depends on the
 /// machine, so a resumed ensemble runs it again.
 inline constexpr const char* kTimedOut = "timed_out";
+/// Status of a sample whose scenario was refused.
+inline constexpr const char* kFailedInput = "failed_input";
+
+/// Per-body outputs of a complete sample (statistics, thresholds): "BODY.QUANTITY".
+inline constexpr std::array<const char*, 5> kOutputQuantities = {"delta_v", "pdof_deg", "peak_acceleration_g",
+                                                                 "max_crush", "crush_energy"};
+/// What evidence may be measured on besides the outputs: the crush profile and the rest position.
+inline constexpr std::array<const char*, 9> kMeasuredQuantities = {"c1", "c2", "c3", "c4", "c5", "c6",
+                                                                   "rest_x", "rest_y", "rest_heading"};
 
 /// Runs sample `index` with `values` and makes its record; never throws for a bad sample (the
 /// record says why). `engine_version` is written into the record. With `time_limit` > 0 [s, wall
