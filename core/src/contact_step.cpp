@@ -66,6 +66,7 @@ void ContactDiagnostics::Add(const ContactDiagnostics& o) {
   too_far_limited += o.too_far_limited;
   max_crush_limited += o.max_crush_limited;
   growth_limited += o.growth_limited;
+  held += o.held;
   reduced += o.reduced;
   non_finite += o.non_finite;
   pairs_in_contact += o.pairs_in_contact;
@@ -334,14 +335,26 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   }
   if (found) ++out->diag.located;
   if (!found && !was_touching) return;
-  // spec §6: a node pressed on the master that finds no face this step while the bodies still close
-  // on it along its last contact normal (it slid past a face's edge, or the other side's crush moved
-  // the face) springs back at most to the master's nearest surface: it cannot spring away from a
-  // surface that approaches it. (Springing its whole e delta_max at once left it up to 0.65 in outside
-  // a surface still closing on it, to come back on the weak rebound curve.) Bodies that part let it
-  // spring freely
+  const bool closing_unfound =
+      !found && hit.rel_velocity.dot(f.r_slave_to_master * f.slave->contact_normal[v]) < 0.0;
+  // spec §6: a node pressed on a deformable master that finds no face this step while the bodies
+  // still close on it along its last contact normal (the master's own crush moved the face, or it
+  // lies over a gap between the display mesh's panels) keeps its crush and its branch of the law,
+  // without force, until it meets a face again. (Springing it as if unloaded put it back on the weak
+  // rebound curve, 10 % of the loading force at e = 0.1, to be reloaded from below its peak: on a
+  // 30 mph rear-end the cars closed 48 in while their crush added up to 30 in.)
+  if (closing_unfound && !f.master_model->rigid) {
+    f.slave->node_force[v] = 0.0;
+    f.slave->contact_normal[v] = Vec3::Zero();
+    ++out->diag.held;
+    return;
+  }
+  // spec §6: against a rigid master (whose surface does not move in its frame) such a node slid past
+  // the face's edge: it springs back at most to the master's nearest surface; it cannot spring away
+  // from a surface that approaches it. (Springing its whole e delta_max at once left it up to 0.65 in
+  // outside a surface still closing on it.) Bodies that part let it spring freely
   double free_gap = INFINITY;
-  if (!found && hit.rel_velocity.dot(f.r_slave_to_master * f.slave->contact_normal[v]) < 0.0)
+  if (closing_unfound)
     free_gap = DistanceToMaster(f, v, f.slave_model->restitution * f.slave->delta_max[v], &out->scratch);
   Vec3 delta;
   const double node_force =
@@ -636,6 +649,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   Vec3 delta = s.delta[v];
   *new_delta = delta;
   bool touching = false;
+  bool held = false;
   // the master's outward normal in the slave frame: the node is pushed out of the master along it,
   // the way a frictionless surface pushes (no sideways drag whatever the search direction)
   const Vec3 normal_slave = hit ? Vec3(f.r_slave_to_master.transpose() * hit->normal) : Vec3::Zero();
@@ -689,6 +703,12 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     }
     delta += push * normal_slave;
     touching = true;
+  } else if (hit && receding < 0.0 && !f.master_model->rigid) {
+    // in front of a deformable master's face that still closes on it: no force yet, and no spring
+    // toward the face either; the node keeps its branch of the law until the face reaches it (it
+    // springs back when the surfaces part, not because the master's own crush opened a gap)
+    held = true;
+    ++diag->held;
   } else if (can_spring && deflection > 0.0) {
     // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max;
     // a node still inside a receding surface (an overlap a step left over) follows it by its motion,
@@ -717,7 +737,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   // spec §6: DeltaMaxTotal, the unloading state machine and the node law
   const double peak = s.delta_max[v];
   s.delta_max[v] = std::max(s.delta_max[v], new_deflection);
-  s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
+  if (!held) s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
   const double area = touching ? ProjectedNodeArea(m, s, v, normal_slave) : s.node_area[v];
   const double force =
       touching ? area * NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_) : 0.0;

@@ -168,9 +168,10 @@ std::string OverallTable(const Context& c) {
   const ContactDiagnostics& d = s.diagnostics;
   t += Row("diagnostics: candidates / located / touching",
            one(std::to_string(d.candidates) + " / " + std::to_string(d.located) + " / " + std::to_string(d.touching)));
-  t += Row("limits: too far / max crush / growth / pushback reduced / NaN guard",
+  t += Row("limits: too far / max crush / growth / held unfound / pushback reduced / NaN guard",
            one(std::to_string(d.too_far_limited) + " / " + std::to_string(d.max_crush_limited) + " / " +
-               std::to_string(d.growth_limited) + " / " + std::to_string(d.reduced) + " / " + std::to_string(d.non_finite)));
+               std::to_string(d.growth_limited) + " / " + std::to_string(d.held) + " / " + std::to_string(d.reduced) +
+               " / " + std::to_string(d.non_finite)));
   return t + "</table>\n";
 }
 

@@ -63,27 +63,15 @@ Outcome RunInTurnedBodyFrames(Scenario s, double angle) {
   return Run(s, false, models);
 }
 
-// Variants whose delta-V misses the 2 % bar, a known limit in the README: the 45-degree oblique takes
-// one of two contact branches from about 0.09 s on, and the step decides which (the bullet's
-// delta-V at 0.8 s over dt, dt/1.5, dt/2, dt/3, dt/4, dt/6: 15.52, 14.82, 15.07, 15.02, 15.27,
-// 14.98 mph; SD 1.7 %). dt against dt/2 is -2.92 % on both bodies (-2.08 % before a node springing
-// along a face stopped counting as touching it; -1.70 % before that, through a locator miss at a
-// fold of the struck car's crushed front that the brute-force oracle finds).
-// Such a variant is held to being over the bar, so the exception goes when the physics is fixed
-bool KnownOverTheBar(const std::string& label) { return label == "car_to_car_oblique.json dt/2"; }
-
 // the bar: each variant changes delta-V and the contact work (crush + friction) by under 2 %,
 // and balances within 2 %. The split of that work between crush and friction is printed, not held to
-// 2 %: it moves by up to 2.2 % (oblique, dt/2), a known limit in the README.
+// 2 %: it moves by up to 3.7 % (offset, p406 mesh 1:4), a known limit in the README. (The oblique's
+// delta-V missed the bar at dt/2, -2.92 %, until nodes pressed on a deformable master stopped
+// unloading when a gap opened in front of them while the bodies still closed: now -1.78 %.)
 void ExpectClose(const Outcome& base, const Outcome& v, const std::string& label) {
   for (size_t i = 0; i < base.delta_v.size(); ++i) {
     EXPECT_GT(base.delta_v[i], 1.0) << label;  // a real collision [m/s]
-    if (KnownOverTheBar(label)) {
-      EXPECT_GT(std::abs(v.delta_v[i] - base.delta_v[i]), 0.02 * base.delta_v[i]) << label << " body " << i
-          << ": now within the bar; drop the exception (and the README's known limit)";
-    } else {
-      EXPECT_NEAR(v.delta_v[i], base.delta_v[i], 0.02 * base.delta_v[i]) << label << " body " << i;
-    }
+    EXPECT_NEAR(v.delta_v[i], base.delta_v[i], 0.02 * base.delta_v[i]) << label << " body " << i;
   }
   const double work = base.crush + base.friction;
   EXPECT_NEAR(v.crush + v.friction, work, 0.02 * work) << label;
