@@ -708,7 +708,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     // toward the face either; the node keeps its branch of the law until the face reaches it (it
     // springs back when the surfaces part, not because the master's own crush opened a gap)
     held = true;
-    ++diag->held;
+    if (can_spring && deflection > 0.0) ++diag->held;  // counted where it keeps a crush from springing
   } else if (can_spring && deflection > 0.0) {
     // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max;
     // a node still inside a receding surface (an overlap a step left over) follows it by its motion,

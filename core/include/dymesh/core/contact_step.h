@@ -27,7 +27,7 @@ struct ContactDiagnostics {
   long long too_far_limited = 0;   ///< restorations cut by the TOOFAR margin
   long long max_crush_limited = 0; ///< restorations cut by the maximum crush
   long long growth_limited = 0;    ///< reloads cut by MAX_GROW_UNLOAD
-  long long held = 0;              ///< nodes on a deformable master that lost their face while it closed: held
+  long long held = 0;              ///< crushed nodes held (no force, no spring) while a deformable master closed on them
   long long reduced = 0;           ///< restorations reduced by PushbackReduction (version 4)
   long long non_finite = 0;        ///< node updates skipped by the NaN guard
   int pairs_in_contact = 0;        ///< pairs whose bounds overlapped
