@@ -3,6 +3,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "dymesh/io/body_models.h"
 #include "dymesh/io/scenario_json.h"
@@ -67,52 +70,112 @@ TEST(Inline, MomentumDeltaVRestitutionAndEnergy) {
               s.separation_speed / s.closing_speed, -dv1, (1 + e) * m2 / (m1 + m2) * v, 100 * s.energy_balance_error);
 }
 
-// Real car meshes in line, the p406 at 30 mph into the rear of the stationary stock car: where the
-// two crushed surfaces meet, the cars can have closed no more than the two sides crushed. At the
-// closest approach (common velocity) the CG closure past the 1 in start gap equals the p406's
-// deepest crush plus the stock car's deepest crush, which lie opposite each other on the line of
-// centres; 10 % of the closure covers nodes of the two meshes not exactly opposite (faces of 1-3 in
-// at the bumpers). Until nodes pressed on a deformable master stopped unloading when a gap opened in
-// front of them while the bodies still closed, the cars closed 48 in for 30 in of crush: display-mesh
-// nodes that lost their face sprang back onto the weak rebound curve and sank into the other car
-TEST(Inline, RealCarMeshesCloseOnlyAsFarAsTheyCrush) {
-  const std::string data = DYMESH_DATA_DIR;
-  const Scenario s = ParseScenario(R"({"units": "US", "time": {"step": 0.0005, "duration": 0.3},
-    "contact": {"passes_per_step": 2},
-    "bodies": [
-      {"name": "p406", "vehicle": "vehicles/p406.json",
-       "initial": {"position": [-250, 0, -22], "speed": 30, "place_at_contact": {"with": "stock", "gap": 1}}},
-      {"name": "stock", "vehicle": "vehicles/car1_stock.json", "initial": {"position": [0, 0, -20]}}]})",
-                                   data + "/rear_end.json");
+// Real car meshes in line, the p406 at 30 mph into the rear of the stationary stock car, in a frame
+// turned `angle_deg` about the vertical; `contact`: the members of the scenario's contact object
+std::string RearEndJson(double angle_deg, const std::string& contact, double step, bool stock_first) {
+  const double a = angle_deg * 3.14159265358979323846 / 180.0;
+  char p406[400], stock[200], json[1200];
+  std::snprintf(p406, sizeof p406,
+                R"({"name": "p406", "vehicle": "vehicles/p406.json", "initial": {"position": [%.9f, %.9f, -22],
+                "heading": %.9f, "speed": 30, "place_at_contact": {"with": "stock", "gap": 1}}})",
+                -250.0 * std::cos(a), -250.0 * std::sin(a), angle_deg);
+  std::snprintf(stock, sizeof stock,
+                R"({"name": "stock", "vehicle": "vehicles/car1_stock.json", "initial": {"position": [0, 0, -20],
+                "heading": %.9f}})", angle_deg);
+  std::snprintf(json, sizeof json, R"({"units": "US", "time": {"step": %.9f, "duration": 0.3},
+                "contact": {%s}, "bodies": [%s, %s]})",
+                step, contact.c_str(), stock_first ? stock : p406, stock_first ? p406 : stock);
+  return json;
+}
+
+// what the rear-end gives at the closest approach [in]
+struct RearEnd {
+  double closure = 0.0, c_p406 = 0.0, c_stock = 0.0, share_p406 = 0.0, balance = 0.0;
+};
+
+// Runs the rear-end to its closest approach (common velocity along the heading): the CG closure past
+// the 1 in start gap, each car's deepest crush along its body x (the p406's front pushed back, the
+// stock car's rear pushed forward; both cars keep their heading), the p406's equal-pressure share of
+// their sum and the ledger's balance
+RearEnd RunRearEnd(const std::string& label, const std::string& json, int p406_subdivisions = 0) {
+  Scenario s = ParseScenario(json, std::string(DYMESH_DATA_DIR) + "/rear_end.json");
+  for (BodySpec& b : s.bodies) {
+    if (b.name == "p406") b.mesh.subdivisions = p406_subdivisions;
+  }
   auto device = std::make_shared<const accel::EmbreeDevice>();
   Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
   const ContactEngine& engine = sim.engine();
-  auto distance = [&] { return engine.state(1).rigid.position.x() - engine.state(0).rigid.position.x(); };
+  const int p406 = engine.model(0).name == "p406" ? 0 : 1, stock = 1 - p406;
+  const double yaw = engine.state(p406).rigid.yaw;
+  const Vec3 heading(std::cos(yaw), std::sin(yaw), 0.0);
+  auto distance = [&] { return (engine.state(stock).rigid.position - engine.state(p406).rigid.position).dot(heading); };
   const double start = distance();
-  while (sim.Advance() && engine.state(0).rigid.velocity.x() > engine.state(1).rigid.velocity.x()) {
+  while (sim.Advance() &&
+         engine.state(p406).rigid.velocity.dot(heading) > engine.state(stock).rigid.velocity.dot(heading)) {
   }
-  // the deepest crush along the line of centres (the p406's front pushed back, the stock car's rear
-  // pushed forward; both cars keep their heading)
   auto deepest = [&](int body, double sign) {
     double deepest_x = 0.0;
     for (const Vec3& d : engine.state(body).delta) deepest_x = std::max(deepest_x, sign * d.x());
-    return deepest_x;
+    return deepest_x / u::kInch;
   };
-  const double closure = start - distance() - 1.0 * u::kInch;
-  const double crush = deepest(0, -1.0) + deepest(1, 1.0);
-  EXPECT_GT(closure, 10.0 * u::kInch);  // a real crush
-  EXPECT_NEAR(closure, crush, 0.1 * closure);
+  RearEnd r;
+  r.closure = (start - distance()) / u::kInch - 1.0;
+  r.c_p406 = deepest(p406, -1.0);
+  r.c_stock = deepest(stock, 1.0);
   // spec §5 equal pressure: the p406's front (A 350 lb/in, B 125 lb/in^2) and the stock car's back
   // (A 320, B 110), both over a 30 in conversion height, share the total crush S where
-  // 350 + 125 (C1 - 0.5) = 320 + 110 (C2 - 0.5), C1 + C2 = S: C1 = (110 S - 22.5) / 235. Each side's
-  // deepest node within 15 % of its share: about one node spacing (2-3 in) of the faceted bumpers.
-  // (Before the hold, 18.8 against 9.9 in: the p406's nodes that sank into the stock car counted as crush)
-  const double s_in = crush / u::kInch, c1 = (110.0 * s_in - 22.5) / 235.0;
-  EXPECT_NEAR(deepest(0, -1.0) / u::kInch, c1, 0.15 * c1);
-  EXPECT_NEAR(deepest(1, 1.0) / u::kInch, s_in - c1, 0.15 * (s_in - c1));
-  std::printf("[measured] rear-end, real meshes: closure %.2f in at %.4f s, crush %.2f + %.2f in "
-              "(equal pressure %.2f + %.2f)\n", closure / u::kInch, sim.time(), deepest(0, -1.0) / u::kInch,
-              deepest(1, 1.0) / u::kInch, c1, s_in - c1);
+  // 350 + 125 (C1 - 0.5) = 320 + 110 (C2 - 0.5), C1 + C2 = S: C1 = (110 S - 22.5) / 235
+  r.share_p406 = (110.0 * (r.c_p406 + r.c_stock) - 22.5) / 235.0;
+  r.balance = Summarize(sim).energy_balance_error;
+  std::printf("[measured] rear-end, real meshes, %s: closure %.2f in at %.4f s, crush %.2f + %.2f in "
+              "(equal pressure %.2f + %.2f), balance %.4f %%\n", label.c_str(), r.closure, sim.time(), r.c_p406,
+              r.c_stock, r.share_p406, r.c_p406 + r.c_stock - r.share_p406, 100 * r.balance);
+  return r;
+}
+
+// The cars can have closed no more than the two sides crushed where their crushed surfaces meet: the
+// closure equals the two deepest crushes, which lie opposite each other on the line of centres; 10 %
+// of the closure covers nodes of the two meshes not exactly opposite (faces of 1-3 in at the
+// bumpers). The ledger balances within 2 % (the issue's bar). Held over dt/2, 3 and 4 passes, the
+// polygon-normal search, the p406's mesh 1:4, the body order and a frame turned 30 degrees. The
+// local-average-normal search closes 12 % more than it crushes (34.5 against 30.7 in), a known limit
+// in the README held over the bar here. Until nodes pressed on a deformable master stopped unloading
+// when a gap opened in front of them while the bodies still closed, the default closed 47.8 in for
+// 18.8 + 9.9 in of crush: display-mesh nodes that lost their face sprang back onto the weak rebound
+// curve and sank into the other car.
+// The crush split is held to the equal-pressure share (each side's deepest node within 15 %, about
+// one node spacing of the faceted bumpers) at the default discretisation only: the other variants
+// give the p406 10-30 % more than its share (a known limit in the README), printed here
+TEST(Inline, RealCarMeshesCloseOnlyAsFarAsTheyCrush) {
+  const std::string two = R"("passes_per_step": 2)";
+  const std::vector<std::pair<std::string, RearEnd>> runs = {
+      {"default", RunRearEnd("default", RearEndJson(0, two, 0.0005, false))},
+      {"dt/2", RunRearEnd("dt/2", RearEndJson(0, two, 0.00025, false))},
+      {"3 passes", RunRearEnd("3 passes", RearEndJson(0, R"("passes_per_step": 3)", 0.0005, false))},
+      {"4 passes", RunRearEnd("4 passes", RearEndJson(0, R"("passes_per_step": 4)", 0.0005, false))},
+      {"local average normal",
+       RunRearEnd("local average normal",
+                  RearEndJson(0, two + R"(, "search_direction": "local_average_normal")", 0.0005, false))},
+      {"polygon normal",
+       RunRearEnd("polygon normal", RearEndJson(0, two + R"(, "search_direction": "poly_normal")", 0.0005, false))},
+      {"p406 mesh 1:4", RunRearEnd("p406 mesh 1:4", RearEndJson(0, two, 0.0005, false), 1)},
+      {"stock car listed first", RunRearEnd("stock car listed first", RearEndJson(0, two, 0.0005, true))},
+      {"frame turned 30 deg", RunRearEnd("frame turned 30 deg", RearEndJson(30, two, 0.0005, false))},
+  };
+  for (const auto& [label, r] : runs) {
+    const double crush = r.c_p406 + r.c_stock;
+    EXPECT_GT(r.closure, 10.0) << label;  // a real crush [in]
+    if (label == "local average normal") {
+      EXPECT_GT(std::abs(r.closure - crush), 0.1 * r.closure) << label << ": now within the bar; drop the exception";
+    } else {
+      EXPECT_NEAR(r.closure, crush, 0.1 * r.closure) << label;
+    }
+    EXPECT_NEAR(r.balance, 0.0, 0.02) << label;
+  }
+  const RearEnd& base = runs.front().second;
+  EXPECT_NEAR(base.c_p406, base.share_p406, 0.15 * base.share_p406);
+  const double share_stock = base.c_p406 + base.c_stock - base.share_p406;
+  EXPECT_NEAR(base.c_stock, share_stock, 0.15 * share_stock);
 }
 
 TEST(Inline, ThreeBodiesInAChainShareOneMomentum) {

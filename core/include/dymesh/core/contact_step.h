@@ -137,9 +137,10 @@ class ContactEngine {
   // distance from slave node v to the master's nearest surface within `radius`, else infinity
   double DistanceToMaster(const PassFrame& f, int v, double radius, std::vector<Candidate>* scratch) const;
   // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
-  // step_start_deflection; the new Delta goes to *new_delta (committed later). `free_gap`: without a
-  // hit, how far the node may spring back (the distance to the master's surface)
-  double RestoreNode(const PassFrame& f, int v, const Located* hit, double free_gap, double dt,
+  // step_start_deflection; the new Delta goes to *new_delta (committed later). Without a hit:
+  // `closing_unfound`, the bodies still close on the node along its last contact normal, and
+  // `free_gap`, how far the node may spring back (the distance to a rigid master's surface)
+  double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta);
   void CommitPending(int body);
   bool BoundsOverlap(int a, int b) const;
