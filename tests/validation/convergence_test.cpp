@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dymesh/io/body_models.h"
 #include "dymesh/io/scenario_json.h"
@@ -24,6 +26,9 @@ struct Outcome {
   double crush = 0.0;           // [J] ledger crush work, all bodies
   double friction = 0.0;        // [J] ledger friction work, all bodies
   double balance = 0.0;
+  std::vector<double> yaw_rate;  // [rad/s] after the contact, same order
+  double contact_end = -1.0;     // [s]
+  RunStatus status = RunStatus::kComplete;
 };
 
 // the run; `swap` reverses the body order (results are mapped back to the base order)
@@ -37,7 +42,11 @@ Outcome Run(Scenario s, bool swap, std::vector<std::shared_ptr<const BodyModel>>
   const Summary sum = Summarize(sim);
   Outcome o;
   o.delta_v = {sum.bodies[0].delta_v, sum.bodies[1].delta_v};
+  o.yaw_rate = {sum.bodies[0].final_yaw_rate, sum.bodies[1].final_yaw_rate};
   if (swap) std::swap(o.delta_v[0], o.delta_v[1]);
+  if (swap) std::swap(o.yaw_rate[0], o.yaw_rate[1]);
+  o.contact_end = sum.contact_end;
+  o.status = sum.status;
   o.crush = sum.crush_energy;
   o.friction = sum.friction_energy;
   o.balance = sum.energy_balance_error;
@@ -65,9 +74,12 @@ Outcome RunInTurnedBodyFrames(Scenario s, double angle) {
 
 // the issue's bar: each variant changes delta-V and the contact work (crush + friction) by under 2 %,
 // and balances within 2 %. The split of that work between crush and friction is printed, not held to
-// 2 %: it moves by up to 3.7 % (offset, p406 mesh 1:4), a known limit in the README. (The oblique's
-// delta-V missed the bar at dt/2, -2.92 %, until nodes pressed on a deformable master stopped
-// unloading when a gap opened in front of them while the bodies still closed: now -1.78 %.)
+// 2 %: it moves by up to 3.5 % (offset, p406 mesh 1:4), a known limit in the README. Nor is the yaw
+// rate after the contact, printed: it moves by 2-4 % on the oblique and far more where a long light
+// tail of sliding contact turns the cars (README known limit). (The oblique's delta-V missed the bar
+// at dt/2, -2.92 %, until nodes pressed on a deformable master stopped unloading when a gap opened in
+// front of them while the bodies still closed, and withdrawing nodes stopped meeting the far side of
+// panels they had gone through: now +0.53 %.)
 void ExpectClose(const Outcome& base, const Outcome& v, const std::string& label) {
   for (size_t i = 0; i < base.delta_v.size(); ++i) {
     EXPECT_GT(base.delta_v[i], 1.0) << label;  // a real collision [m/s]
@@ -80,18 +92,36 @@ void ExpectClose(const Outcome& base, const Outcome& v, const std::string& label
               label.c_str(), 100 * (v.delta_v[0] / base.delta_v[0] - 1), 100 * (v.delta_v[1] / base.delta_v[1] - 1),
               100 * ((v.crush + v.friction) / work - 1), 100 * (v.crush / base.crush - 1),
               100 * (v.friction / base.friction - 1));
+  std::printf("[measured] %s: yaw rate after %+.2f %% / %+.2f %% (base %.1f / %.1f deg/s), contact ends %.4f s (base %.4f s), status %s\n",
+              label.c_str(), 100 * (v.yaw_rate[0] / base.yaw_rate[0] - 1), 100 * (v.yaw_rate[1] / base.yaw_rate[1] - 1),
+              base.yaw_rate[0] / units::kDegree, base.yaw_rate[1] / units::kDegree, v.contact_end, base.contact_end,
+              RunStatusName(v.status));
 }
 
-void ExpectConverged(const std::string& name) {
+// issue 8 item 6, contact that ends: the run parts (status complete) before `parted_by` [s]
+void ExpectParted(const Outcome& o, double parted_by, const std::string& label) {
+  EXPECT_EQ(o.status, RunStatus::kComplete) << label;
+  EXPECT_GT(o.contact_end, 0.0) << label;
+  EXPECT_LT(o.contact_end, parted_by) << label;
+}
+
+// each variant against the base; with `parted_by` > 0 every one must also part before it
+void ExpectConverged(const std::string& name, double parted_by = 0.0) {
   const Scenario base_scenario = Demo(name);
   const Outcome base = Run(base_scenario, false);
   Scenario half = base_scenario;
   half.time_step /= 2;
-  ExpectClose(base, Run(half, false), name + " dt/2");
   Scenario fine = base_scenario;
   fine.bodies[0].mesh.subdivisions += 1;
-  ExpectClose(base, Run(fine, false), name + " p406 mesh 1:4");
-  ExpectClose(base, RunInTurnedBodyFrames(base_scenario, 10.0 * units::kDegree), name + " body frames +10 deg");
+  const std::vector<std::pair<std::string, Outcome>> variants = {
+      {name + " dt/2", Run(half, false)},
+      {name + " p406 mesh 1:4", Run(fine, false)},
+      {name + " body frames +10 deg", RunInTurnedBodyFrames(base_scenario, 10.0 * units::kDegree)}};
+  for (const auto& [label, outcome] : variants) {
+    ExpectClose(base, outcome, label);
+    if (parted_by > 0.0) ExpectParted(outcome, parted_by, label);
+  }
+  if (parted_by > 0.0) ExpectParted(base, parted_by, name);
   // body order: bit-identical physics (the pair's passes run simultaneously), so exact equality
   const Outcome swapped = Run(base_scenario, true);
   EXPECT_EQ(swapped.delta_v, base.delta_v) << name;
@@ -99,7 +129,10 @@ void ExpectConverged(const std::string& name) {
 }
 
 TEST(Convergence, SideImpactDemo) { ExpectConverged("car_to_car_side.json"); }
-TEST(Convergence, Oblique45Degrees) { ExpectConverged("car_to_car_oblique.json"); }
+// the issue's bar: the shipped vehicles at 45 degrees and 35 mph part within 0.5 s (they stayed
+// together past 0.8 s while a door's inner panel, crushed past by the outer one, caught the
+// withdrawing p406)
+TEST(Convergence, Oblique45Degrees) { ExpectConverged("car_to_car_oblique.json", 0.5); }
 TEST(Convergence, OffsetFrontal) { ExpectConverged("car_to_car_offset.json"); }
 
 }  // namespace

@@ -114,7 +114,7 @@ TEST(Determinism, BarrierAtAnyThreadCount) {
 }
 
 TEST(Determinism, CarToCarRealMeshesAtAnyThreadCount) {
-  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0xeef757eb7f3c47cbull);
+  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0xd664bcbd3f487156ull);
 }
 
 TEST(Determinism, HighPolygonCarToCarAtAnyThreadCount) {

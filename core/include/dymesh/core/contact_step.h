@@ -132,7 +132,7 @@ class ContactEngine {
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
                   Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
-                       const Vec3& inward, const Vec3& previous, bool poly_normal, const Located* best,
+                       const Vec3& inward, const Vec3& previous, const Vec3& parting, bool poly_normal, const Located* best,
                        Located* out) const;
   // distance from slave node v to the master's nearest surface within `radius`, else infinity
   double DistanceToMaster(const PassFrame& f, int v, double radius, std::vector<Candidate>* scratch) const;
@@ -155,6 +155,9 @@ class ContactEngine {
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
   std::vector<std::array<std::vector<int>, 2>> touching_;  // per pair (a<b): nodes of a, of b touching the other
   std::vector<char> held_;  // per pair (a<b): friction left the slide under the null band in the last step
+  // per ordered pair (slave * n + master): the normal impulse the master gave the slave in this
+  // contact, master frame [N s]; cleared when the pair's bounds part
+  std::vector<Vec3> pushed_;
   std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop
   std::vector<std::vector<Vec3>> pending_delta_;  // [m] per body: new Delta awaiting commit (n_vertices)
   std::vector<std::vector<int>> moved_;           // per body: nodes whose pending Delta awaits commit
