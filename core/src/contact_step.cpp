@@ -66,7 +66,7 @@ void ContactDiagnostics::Add(const ContactDiagnostics& o) {
   too_far_limited += o.too_far_limited;
   max_crush_limited += o.max_crush_limited;
   growth_limited += o.growth_limited;
-  held += o.held;
+  held_unfound += o.held_unfound;
   reduced += o.reduced;
   non_finite += o.non_finite;
   pairs_in_contact += o.pairs_in_contact;
@@ -202,14 +202,15 @@ StepResult ContactEngine::Step(double dt) {
   // every pair whose bounds overlap, in index order (determinism: fixed pair order)
   for (int a = 0; a < n; ++a) {
     for (int b = a + 1; b < n; ++b) {
-      char& held = held_[static_cast<size_t>(a) * n + b];
+      const size_t ab = static_cast<size_t>(a) * n + b, ba = static_cast<size_t>(b) * n + a;
+      char& held = held_[ab];
       if ((models_[a]->rigid && models_[b]->rigid) || !BoundsOverlap(a, b)) {
         held = 0;
-        pushed_[static_cast<size_t>(a) * n + b] = pushed_[static_cast<size_t>(b) * n + a] = Vec3::Zero();
+        pushed_[ab] = pushed_[ba] = Vec3::Zero();
         continue;
       }
       ++result.diagnostics.pairs_in_contact;
-      auto& touching = touching_[static_cast<size_t>(a) * n + b];
+      auto& touching = touching_[ab];
       const int passes = options_.passes_per_step;
       std::vector<PassSums> sums(passes);
       auto run = [&](int pass, int master, bool stage) {
@@ -238,8 +239,8 @@ StepResult ContactEngine::Step(double dt) {
       result.pairs.push_back(CombinePasses(a, b, sums));
       // the pair's normal impulse, each side in the other's frame
       const Vec3 on_a = result.pairs.back().normal_force[0] * dt;
-      pushed_[static_cast<size_t>(a) * n + b] += states_[b].rigid.Rotation().transpose() * on_a;
-      pushed_[static_cast<size_t>(b) * n + a] -= states_[a].rigid.Rotation().transpose() * on_a;
+      pushed_[ab] += states_[b].rigid.Rotation().transpose() * on_a;
+      pushed_[ba] -= states_[a].rigid.Rotation().transpose() * on_a;
       held = LimitFriction(dt, &result.pairs.back()) ? 1 : 0;
     }
   }
@@ -581,11 +582,11 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   // a node in contact keeps meeting faces turned the same way (it left the last one through its
   // outside): a crushed-through panel's inner face does not take over and pull it in
   const Vec3 previous = was_touching ? Vec3(f.r_slave_to_master * f.slave->contact_normal[v]) : Vec3::Zero();
-  // while the node moves out along the normal impulse this contact has given its body, a face that
-  // would push it back in is the far side of material it went through (a door's inner panel, left
-  // standing while the outer one was crushed past it, caught the withdrawing car and held the
-  // bodies together: 600 lbf of pull for 0.3 s on the 45 deg demo). Approaching nodes keep every
-  // face: a crushed zone's folds turn faces against the impulse
+  // spec §2 Location: while the node moves out along the normal impulse this contact has given its
+  // body, a face that would push it back in is the far side of material it went through (a door's
+  // inner panel, left standing while the outer one was crushed past it, caught the withdrawing car
+  // and held the bodies together: 600 lbf of pull for 0.3 s on the 45 deg demo). Approaching nodes
+  // keep every face: a crushed zone's folds turn faces against the impulse
   const Vec3 parting = v_rel.dot(f.pushed) > 0.0 ? f.pushed : Vec3::Zero();
   const Vec3 dir = along ? *along : SearchLine(f, v_rel, inward);
   const bool poly_normal = !along && options_.search_direction == SearchDirection::kPolyNormal;
@@ -717,7 +718,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     // e = 0.1, reloaded from below its peak: on a 30 mph rear-end the real car meshes closed 47.8 in
     // for 28.6 in of crush along the line of centres)
     held = true;
-    if (can_spring && deflection > 0.0) ++diag->held;  // counted where it keeps a crush from springing
+    if (can_spring && deflection > 0.0) ++diag->held_unfound;  // counted where it keeps a crush from springing
   } else if (can_spring && deflection > 0.0) {
     // spec §6 unloading: the node springs back toward the receding surface, at most to (1-e) delta_max;
     // a node still inside a receding surface (an overlap a step left over) follows it by its motion,

@@ -22,6 +22,14 @@ namespace {
 using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
+// "a, b, c" for messages
+template <class Names>
+std::string JoinNames(const Names& names) {
+  std::string list;
+  for (const char* name : names) list += std::string(list.empty() ? "" : ", ") + name;
+  return list;
+}
+
 // what the spec is read from, for messages
 struct Reader {
   std::string file;
@@ -41,9 +49,7 @@ struct Reader {
     if (!object.is_object()) Fail(field, "expected an object, got " + object.dump());
     for (const auto& item : object.items()) {
       if (std::find(allowed.begin(), allowed.end(), item.key()) != allowed.end()) continue;
-      std::string list;
-      for (const char* key : allowed) list += std::string(list.empty() ? "" : ", ") + key;
-      Fail(field + "." + item.key(), "unknown key; allowed keys: " + list);
+      Fail(field + "." + item.key(), "unknown key; allowed keys: " + JoinNames(allowed));
     }
   }
   const Json& Array(const Json& j, const std::string& field, const char* what) const {
@@ -182,7 +188,6 @@ Input ParseInput(const Reader& r, const Json& j, const Json& scenario, const std
   if (!path.is_string()) r.Fail(field + ".path", "expected a JSON path string");
   in.path = path.get<std::string>();
   in.pointer = PointerOf(r, in.path, field + ".path");
-  // the path must reach into the scenario: its parent must exist there
   // the path must reach into the scenario: a number there, or a key to create in an object there
   const Json::json_pointer pointer(in.pointer);
   if (!scenario.contains(pointer.parent_pointer()) ||
@@ -434,8 +439,8 @@ Spec LoadSpec(const std::string& path) {
       r.Only(t, at, {"output", "above"});
       const Json& output = r.Require(t, at, "output");
       if (!IsQuantityOf(base_scenario, output, false))
-        r.Fail(at + ".output", "expected BODY.QUANTITY with a body of the scenario and one of delta_v, pdof_deg, "
-                               "peak_acceleration_g, max_crush, crush_energy, got " + output.dump());
+        r.Fail(at + ".output", "expected BODY.QUANTITY with a body of the scenario and one of " +
+                                   JoinNames(kOutputQuantities) + ", got " + output.dump());
       spec.thresholds.push_back({output.get<std::string>(), r.Number(r.Require(t, at, "above"), at + ".above")});
     }
   if (j.contains("evidence")) {

@@ -90,7 +90,7 @@ nlohmann::json SummaryObject(const Summary& s, UnitSystem system) {
   for (const RunWarning& w : s.warnings) j["warnings"].push_back({{"code", w.code}, {"field", w.field}, {"message", w.message}});
   j["diagnostics"] = {{"candidates", d.candidates}, {"located", d.located}, {"touching", d.touching},
                       {"too_far_limited", d.too_far_limited}, {"max_crush_limited", d.max_crush_limited},
-                      {"growth_limited", d.growth_limited}, {"held_unfound", d.held},
+                      {"growth_limited", d.growth_limited}, {"held_unfound", d.held_unfound},
                       {"pushback_reduced", d.reduced},
                       {"non_finite", d.non_finite}, {"pair_steps_in_contact", d.pairs_in_contact}};
   ReplaceNonFinite(&j);

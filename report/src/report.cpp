@@ -170,7 +170,7 @@ std::string OverallTable(const Context& c) {
            one(std::to_string(d.candidates) + " / " + std::to_string(d.located) + " / " + std::to_string(d.touching)));
   t += Row("limits: too far / max crush / growth / held unfound / pushback reduced / NaN guard",
            one(std::to_string(d.too_far_limited) + " / " + std::to_string(d.max_crush_limited) + " / " +
-               std::to_string(d.growth_limited) + " / " + std::to_string(d.held) + " / " + std::to_string(d.reduced) +
+               std::to_string(d.growth_limited) + " / " + std::to_string(d.held_unfound) + " / " + std::to_string(d.reduced) +
                " / " + std::to_string(d.non_finite)));
   return t + "</table>\n";
 }

@@ -27,7 +27,7 @@ struct ContactDiagnostics {
   long long too_far_limited = 0;   ///< restorations cut by the TOOFAR margin
   long long max_crush_limited = 0; ///< restorations cut by the maximum crush
   long long growth_limited = 0;    ///< reloads cut by MAX_GROW_UNLOAD
-  long long held = 0;              ///< crushed nodes held (no force, no spring) while a deformable master closed on them
+  long long held_unfound = 0;      ///< crushed nodes held (no force, no spring) while a deformable master closed on them
   long long reduced = 0;           ///< restorations reduced by PushbackReduction (version 4)
   long long non_finite = 0;        ///< node updates skipped by the NaN guard
   int pairs_in_contact = 0;        ///< pairs whose bounds overlapped
@@ -132,8 +132,8 @@ class ContactEngine {
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
                   Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
-                       const Vec3& inward, const Vec3& previous, const Vec3& parting, bool poly_normal, const Located* best,
-                       Located* out) const;
+                       const Vec3& inward, const Vec3& previous, const Vec3& parting, bool poly_normal,
+                       const Located* best, Located* out) const;
   // distance from slave node v to the master's nearest surface within `radius`, else infinity
   double DistanceToMaster(const PassFrame& f, int v, double radius, std::vector<Candidate>* scratch) const;
   // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
