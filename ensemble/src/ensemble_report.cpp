@@ -136,7 +136,7 @@ std::string StatisticsTable(const std::map<std::string, OutputStatistics>& stats
 std::string FailedTable(const std::vector<SampleRecord>& records) {
   std::string t = "<table id=\"table-failed\"><thead><tr><th>sample</th><th>status</th><th>why</th></tr></thead><tbody>\n";
   for (const SampleRecord& r : records) {
-    if (r.status == "complete") continue;
+    if (r.complete()) continue;
     const nlohmann::json j = nlohmann::json::parse(r.line);
     const std::string why = j.contains("message") ? j["message"].get<std::string>() : j.value("warnings", nlohmann::json::array()).dump();
     t += "<tr><td>" + std::to_string(r.index) + "</td><td>" + XmlEscape(r.status) + "</td><td>" + XmlEscape(why) + "</td></tr>\n";
@@ -166,7 +166,7 @@ std::string EnsembleReportHtml(const Spec& spec, const std::vector<SampleRecord>
   std::string page = "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
                      "<title>DyMESH ensemble report</title>\n<style>" + std::string(kCss) + "</style>\n</head>\n<body>\n";
   int complete = 0;
-  for (const SampleRecord& r : records) complete += r.status == "complete";
+  for (const SampleRecord& r : records) complete += r.complete();
   page += "<h1>Ensemble: " + XmlEscape(spec.file) + "</h1>\n<p>" + std::to_string(records.size()) + " samples, " +
           std::to_string(complete) + " complete (in the statistics), " + std::to_string(records.size() - complete) +
           " not (listed at the end).</p>\n";

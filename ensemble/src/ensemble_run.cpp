@@ -169,7 +169,7 @@ class Collector {
       counts_.resumed = std::min(counts_.resumed, counts_.total);
     }
     counts_.ran = static_cast<int>(mine.size()) - counts_.resumed;
-    for (const auto& [index, r] : mine) counts_.failed += r.status != "complete";
+    for (const auto& [index, r] : mine) counts_.failed += !r.complete();
     counts_.finished = static_cast<int>(mine.size()) == counts_.total;
     if (counts_.finished) {
       WriteResults(spec_, mine, dir_);

@@ -167,7 +167,7 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
   out->inputs.clear();
   if (j.contains("inputs"))
     for (const Input& in : spec.inputs) out->inputs.push_back(j["inputs"].value(in.name, 0.0));
-  if (out->status == "complete" && j.contains("bodies")) {
+  if (out->complete() && j.contains("bodies")) {
     for (const Json& b : j["bodies"]) {
       const std::string name = b["name"].get<std::string>();
       for (const char* q : kOutputQuantities)

@@ -223,7 +223,7 @@ std::vector<double> EvidenceWeights(const Spec& spec, const std::vector<SampleRe
   std::vector<double> log_w(records.size(), -std::numeric_limits<double>::infinity());
   double best = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < records.size(); ++i) {
-    if (records[i].status != "complete") continue;
+    if (!records[i].complete()) continue;
     double l = 0.0;
     bool known = true;
     for (const Evidence& e : spec.evidence) {

@@ -404,6 +404,9 @@ constexpr PhysicalRange kUnloadSlopeRange{0.0, 1e16, 0.0, 1e10, "unloading slope
 // 2-D coefficients are spread over a height of structure: CRASH3 uses 10-40 in
 constexpr PhysicalRange kConversionHeightRange{0.01, 10.0, 0.1, 2.0, "conversion height"};  // [m]
 
+// a name a file can have: not empty, no NUL (a path would be cut short at it)
+bool IsFileName(const std::string& name) { return !name.empty() && name.find('\0') == std::string::npos; }
+
 // a relative path resolved against the folder of the file that names it, made absolute
 std::string ResolvePath(const Source& src, const std::string& name) {
   fs::path p(name);
@@ -589,7 +592,7 @@ MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) 
   if (file == nullptr) Fail(src, Join(path, "file"), "missing required key: give \"file\", \"box\" or \"cylinder\"");
   const std::string field = Join(path, "file");
   const std::string name = ReadString(src, *file, field);
-  if (name.empty() || name.find('\0') != std::string::npos) Fail(src, field, "expected a file name (no NUL character), got " + Describe(*file));
+  if (!IsFileName(name)) Fail(src, field, "expected a file name (no NUL character), got " + Describe(*file));
   mesh.file = ResolvePath(src, name);
   if (const std::string problem = NotARegularFile(mesh.file); !problem.empty())
     Fail(src, field, problem + ": " + mesh.file);
@@ -746,7 +749,7 @@ BodyFields Merge(const BodyFields& base, const BodyFields& over) {
 // a vehicle definition file: its own units, its own paths, errors name it
 BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string& path) {
   const std::string name = ReadString(scenario, j, path);
-  if (name.empty() || name.find('\0') != std::string::npos)
+  if (!IsFileName(name))
     Fail(scenario, path, "expected a vehicle file name (no NUL character), got " + Describe(j));
   const std::string file = ResolvePath(scenario, name);
   if (const std::string problem = NotARegularFile(file); !problem.empty())

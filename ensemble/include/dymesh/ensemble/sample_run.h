@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dymesh/accel/embree_locator.h"
+#include "dymesh/core/run_status.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/ensemble/spec.h"
 
@@ -36,6 +37,9 @@ struct SampleRecord {
   std::map<std::string, double> outputs{}; ///< "BODY.QUANTITY" -> value (scenario units)
   std::vector<double> inputs{};            ///< the sample's input values, in spec order
   std::map<std::string, double> observables{};  ///< outputs plus BODY.c1..c6, rest_x, rest_y, rest_heading
+
+  /// The run parted (status complete): its outputs enter the statistics.
+  bool complete() const { return status == RunStatusName(RunStatus::kComplete); }
 };
 
 /// CRASH3 2-D coefficients of a preset from b0 and b1 (the preset's units): A = m b0 b1 / L,
