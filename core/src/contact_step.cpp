@@ -130,13 +130,13 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   chunk_min_.resize(n);
   chunk_max_.resize(n);
   for (int i = 0; i < n; ++i) InitBounds(i);
-  touching_.resize(static_cast<size_t>(n) * n);
+  engaged_.resize(static_cast<size_t>(n) * n);
   held_.assign(static_cast<size_t>(n) * n, 0);
   pushed_.assign(static_cast<size_t>(n) * n, Vec3::Zero());
   pending_delta_.resize(n);
   moved_.resize(n);
   for (int i = 0; i < n; ++i) pending_delta_[i].resize(models_[i]->mesh.vertices.size());
-  touching_mark_.resize(n);
+  engaged_mark_.resize(n);
 }
 
 void ContactEngine::InitBounds(int body) {
@@ -210,12 +210,12 @@ StepResult ContactEngine::Step(double dt) {
         continue;
       }
       ++result.diagnostics.pairs_in_contact;
-      auto& touching = touching_[ab];
+      auto& engaged = engaged_[ab];
       const int passes = options_.passes_per_step;
       std::vector<PassSums> sums(passes);
       auto run = [&](int pass, int master, bool stage) {
         const int slave = master == a ? b : a;
-        sums[pass] = RunPass(master, slave, stage, held != 0, &touching[slave == a ? 0 : 1], dt, &result.diagnostics);
+        sums[pass] = RunPass(master, slave, stage, held != 0, &engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
       };
       if (models_[a]->rigid || models_[b]->rigid) {
         // a rigid body is always the master and takes none of the crush
@@ -298,7 +298,7 @@ void ContactEngine::AccountWork() {
 }
 
 std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, int slave_index,
-                                               const std::vector<int>& touching) {
+                                               const EngagedNodes& engaged) {
   // slave nodes inside the master's bounds grown by the search reach, in chunks, in index order
   const double reach = options_.search_backoff + options_.toofar_maximum;
   const Vec3 lo = bounds_min_[master].array() - reach, hi = bounds_max_[master].array() + reach;
@@ -319,15 +319,19 @@ std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, i
       }
     }
   });
-  // plus the nodes touching the master at their last update (they may have left the bounds)
-  std::vector<int> culled, merged;
+  // plus the nodes engaged with the master at their last update (they may have left the bounds)
+  std::vector<int> culled, with_touching, merged;
   for (const auto& list : inside) culled.insert(culled.end(), list.begin(), list.end());
-  std::set_union(culled.begin(), culled.end(), touching.begin(), touching.end(), std::back_inserter(merged));
+  std::set_union(culled.begin(), culled.end(), engaged.touching.begin(), engaged.touching.end(),
+                 std::back_inserter(with_touching));
+  std::set_union(with_touching.begin(), with_touching.end(), engaged.holding.begin(), engaged.holding.end(),
+                 std::back_inserter(merged));
   return merged;
 }
 
-void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out) {
+void ContactEngine::ProcessNode(const PassFrame& f, int v, char engagement, double dt, ChunkSums* out) {
   // locate, then restore and evaluate the node law
+  const bool was_touching = engagement == 1;
   Located hit;
   const bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
   // spec §2 Location: against a rigid master (its surface does not move in its frame) a node in
@@ -342,10 +346,17 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
     if (LocateNode(f, v, was_touching, &pressed_on, &out->scratch, &again) && again.depth < hit.depth) hit = again;
   }
   if (found) ++out->diag.located;
-  if (!found && !was_touching) return;
-  // whether the bodies still close on a node that found no face, along its last contact normal
-  const bool closing_unfound =
-      !found && hit.rel_velocity.dot(f.r_slave_to_master * f.slave->contact_normal[v]) < 0.0;
+  if (!found && engagement == 0) return;
+  // whether the bodies still close on a node that found no face: along its last contact normal, or,
+  // holding a spring, along its crush (the line the master pressed it along). spec §6: a held node
+  // keeps its spring only while the master still comes at it; once it moves away from the master
+  // along that line the load is gone and it springs back freely, as a touching node does when the
+  // bodies part. (Kept stored, the spring pushed on whatever face came near it later: the offset
+  // frontal's crushed fronts rubbed for 1.4 s after the main pulse and turned the p406's yaw rate
+  // from 42 to 23 deg/s. The pair's normal impulse as the line released nodes that rotation carried
+  // away during the main pulse: 2.0 % on the offset's delta-V with the p406 mesh 1:4)
+  const Vec3& line = engagement == 2 ? f.slave->delta[v] : f.slave->contact_normal[v];
+  const bool closing_unfound = !found && hit.rel_velocity.dot(f.r_slave_to_master * line) < 0.0;
   // spec §6: such a node pressed on a rigid master (whose surface does not move in its frame) slid
   // past the face's edge: it springs back at most to the master's nearest surface; it cannot spring
   // away from a surface that approaches it. (Springing its whole e delta_max at once left it up to
@@ -354,8 +365,9 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   if (closing_unfound && f.master_model->rigid)
     free_gap = DistanceToMaster(f, v, f.slave_model->restitution * f.slave->delta_max[v], &out->scratch);
   Vec3 delta;
+  bool holding = false;
   const double node_force = RestoreNode(f, v, found ? &hit : nullptr, closing_unfound, free_gap, dt, &out->diag,
-                                        &out->sums.law_energy, &delta);
+                                        &out->sums.law_energy, &delta, &holding);
   if (delta != f.slave->delta[v]) {
     // the new crush waits in pending_delta_ until committed (with the sibling pass, or at once)
     (*f.pending)[v] = delta;
@@ -363,6 +375,7 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
   }
   // the contact normal a touching node keeps (slave frame); none once it lets go
   f.slave->contact_normal[v] = node_force > 0.0 ? Vec3(f.r_slave_to_master.transpose() * hit.normal) : Vec3::Zero();
+  if (holding) out->holding.push_back(v);
   if (node_force <= 0.0) return;
   out->touching.push_back(v);
   ++out->diag.touching;
@@ -390,7 +403,7 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, bool was_touching, do
 }
 
 ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage, bool held,
-                                              std::vector<int>* touching, double dt, ContactDiagnostics* diag) {
+                                              EngagedNodes* engaged, double dt, ContactDiagnostics* diag) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
               Mat3::Identity(), Vec3::Zero(), &pending_delta_[slave],
@@ -399,29 +412,31 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
 
-  const std::vector<int> candidates = CullCandidates(f, master, slave, *touching);
+  const std::vector<int> candidates = CullCandidates(f, master, slave, *engaged);
   diag->candidates += static_cast<long long>(candidates.size());
   locators_[master]->Prepare(slave, step_index_, candidates,
                              [&](int v) { return f.ToMaster(f.slave->vertices[v]); });
 
   // one parallel loop over fixed chunks of candidates; each chunk writes its own nodes and partials
   chunks_.resize(std::max(chunks_.size(), ChunkCount(candidates.size())));
-  // nodes touching at their last update, marked for constant-time look-up
-  std::vector<char>& was_touching = touching_mark_[slave];
-  was_touching.resize(f.slave->vertices.size(), 0);
-  for (int v : *touching) was_touching[v] = 1;
+  // nodes engaged at their last update, marked for constant-time look-up
+  std::vector<char>& mark = engaged_mark_[slave];
+  mark.resize(f.slave->vertices.size(), 0);
+  for (int v : engaged->touching) mark[v] = 1;
+  for (int v : engaged->holding) mark[v] = 2;
   ForEachChunk(candidates.size(), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     ChunkSums& out = chunks_[chunk];
     out.Clear();
-    for (std::size_t i = begin; i < end; ++i) ProcessNode(f, candidates[i], was_touching[candidates[i]] != 0, dt, &out);
+    for (std::size_t i = begin; i < end; ++i) ProcessNode(f, candidates[i], mark[candidates[i]], dt, &out);
   });
-  for (int v : *touching) was_touching[v] = 0;
+  for (int v : engaged->touching) mark[v] = 0;
+  for (int v : engaged->holding) mark[v] = 0;
 
   // determinism: partial sums and node lists folded serially in chunk order
   PassSums sums;
   sums.master = master;
   sums.slave = slave;
-  std::vector<int> now_touching, moved;
+  std::vector<int> now_touching, now_holding, moved;
   for (std::size_t c = 0; c < ChunkCount(candidates.size()); ++c) {
     const ChunkSums& part = chunks_[c];
     sums.normal += part.sums.normal;
@@ -430,9 +445,11 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
     sums.law_energy += part.sums.law_energy;
     diag->Add(part.diag);
     now_touching.insert(now_touching.end(), part.touching.begin(), part.touching.end());
+    now_holding.insert(now_holding.end(), part.holding.begin(), part.holding.end());
     moved.insert(moved.end(), part.moved.begin(), part.moved.end());
   }
-  *touching = std::move(now_touching);
+  engaged->touching = std::move(now_touching);
+  engaged->holding = std::move(now_holding);
   f.slave->law_energy += sums.law_energy;
 
   // crushed nodes change the slave's triangles, bounds and search structure (refit), now or after
@@ -639,7 +656,7 @@ double ContactEngine::DistanceToMaster(const PassFrame& f, int v, double radius,
 
 double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound,
                                   double free_gap, double dt,
-                                  ContactDiagnostics* diag, double* law_energy, Vec3* new_delta) {
+                                  ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding) {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
   const Stiffness& k = m.VertexStiffness(v);
@@ -757,6 +774,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   s.node_force[v] = force;
   s.node_area[v] = area;
   *new_delta = delta;
+  *holding = held && can_spring && new_deflection > (1.0 - e) * s.delta_max[v];
   return force;
 }
 

@@ -74,9 +74,10 @@ Outcome RunInTurnedBodyFrames(Scenario s, double angle) {
 
 // the bar: each variant changes delta-V and the contact work (crush + friction) by under 2 %,
 // and balances within 2 %. The split of that work between crush and friction is printed, not held to
-// 2 %: it moves by up to 3.5 % (offset, p406 mesh 1:4), a known limit in the README. Nor is the yaw
-// rate after the contact, printed: it moves by 2-4 % on the oblique and far more where a long light
-// tail of sliding contact turns the cars (README known limit). (The oblique's delta-V missed the bar
+// 2 %: with the p406 mesh 1:4 it moves by up to 3.6 % (crush) and 9.8 % (friction), a known limit in
+// the README. Nor is the yaw rate after the contact, printed: it moves by 3-6 % on the oblique, 9 % on
+// the side impact's small 11 deg/s at dt/2, and 28-62 % with the p406 mesh 1:4 on the side and offset
+// impacts, where it differs already in the main pulse (README known limit). (The oblique's delta-V missed the bar
 // at dt/2, -2.92 %, until nodes pressed on a deformable master stopped unloading when a gap opened in
 // front of them while the bodies still closed, and withdrawing nodes stopped meeting the far side of
 // panels they had gone through: now +0.53 %.)
@@ -128,17 +129,17 @@ void ExpectConverged(const std::string& name, double parted_by = 0.0) {
   EXPECT_EQ(swapped.crush, base.crush) << name;
 }
 
-TEST(Convergence, SideImpactDemo) { ExpectConverged("car_to_car_side.json"); }
+TEST(Convergence, SideImpactDemo) { ExpectConverged("car_to_car_side.json", 0.5); }
 // the bar: the shipped vehicles at 45 degrees and 35 mph part within 0.5 s (they stayed
 // together past 0.8 s while a door's inner panel, crushed past by the outer one, caught the
 // withdrawing p406)
 TEST(Convergence, Oblique45Degrees) { ExpectConverged("car_to_car_oblique.json", 0.5); }
-TEST(Convergence, OffsetFrontal) { ExpectConverged("car_to_car_offset.json"); }
+TEST(Convergence, OffsetFrontal) { ExpectConverged("car_to_car_offset.json", 0.5); }
 
 // the same bar across the contact options, each run balancing its energy within 2 %: 3 and 4 passes
 // and the stop-after-one rule part within 0.5 s; the local-average-normal search parts within the
-// demo's 0.8 s (0.615 s; all of them were still in contact at 0.8 s before the parting rule). The
-// polygon-normal search still ends in contact: README known limit
+// demo's 0.8 s (0.639 s; all of them were still in contact at 0.8 s before the parting rule). The
+// polygon-normal search parts at 0.81 s, just past the demo's duration: README known limit
 TEST(Convergence, Oblique45DegreesPartsWithOtherContactOptions) {
   const Scenario base = Demo("car_to_car_oblique.json");
   auto with = [&](auto change) {

@@ -114,7 +114,7 @@ TEST(Determinism, BarrierAtAnyThreadCount) {
 }
 
 TEST(Determinism, CarToCarRealMeshesAtAnyThreadCount) {
-  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0xd664bcbd3f487156ull);
+  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0xd31142fe03f65b29ull);
 }
 
 TEST(Determinism, HighPolygonCarToCarAtAnyThreadCount) {

@@ -108,21 +108,28 @@ class ContactEngine {
   struct ChunkSums {
     PassSums sums;
     ContactDiagnostics diag;
-    std::vector<int> touching, moved;     // ascending node indices
+    std::vector<int> touching, holding, moved;  // ascending node indices
     std::vector<Candidate> scratch;       // candidate triangles of one node
     void Clear() {
       sums = PassSums{};
       diag = ContactDiagnostics{};
       touching.clear();
+      holding.clear();
       moved.clear();
     }
   };
-  PassSums RunPass(int master, int slave, bool stage, bool held, std::vector<int>* touching, double dt,
+  // the slave nodes of one side of a pair that stay in the pass's candidates: touching the master at
+  // their last update, or holding a spring the master closed on (both ascending)
+  struct EngagedNodes {
+    std::vector<int> touching, holding;
+  };
+  PassSums RunPass(int master, int slave, bool stage, bool held, EngagedNodes* engaged, double dt,
                    ContactDiagnostics* diag);
-  std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const std::vector<int>& touching);
+  std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const EngagedNodes& engaged);
   // writes slave node v's own state (through RestoreNode), its contact normal and its pending Delta
   // (f.pending[v]); nothing of any other node (the parallel loop relies on it), sums into *out
-  void ProcessNode(const PassFrame& f, int v, bool was_touching, double dt, ChunkSums* out);
+  // `engagement`: 1 touching at its last update, 2 holding a spring, 0 neither
+  void ProcessNode(const PassFrame& f, int v, char engagement, double dt, ChunkSums* out);
   // spec §7 Coulomb bounds on the pair's friction; true when it leaves the slide under the null band
   // (held in the next step)
   bool LimitFriction(double dt, PairLoads* pair) const;
@@ -139,9 +146,10 @@ class ContactEngine {
   // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
   // step_start_deflection; the new Delta goes to *new_delta (committed later). Without a hit:
   // `closing_unfound`, the bodies still close on the node along its last contact normal, and
-  // `free_gap`, how far the node may spring back (the distance to a rigid master's surface)
+  // `free_gap`, how far the node may spring back (the distance to a rigid master's surface).
+  // *holding: the node was held with a spring still stored (spec §6)
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
-                     ContactDiagnostics* diag, double* law_energy, Vec3* new_delta);
+                     ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding);
   void CommitPending(int body);
   bool BoundsOverlap(int a, int b) const;
   void InitBounds(int body);
@@ -153,7 +161,7 @@ class ContactEngine {
   std::vector<std::unique_ptr<Locator>> locators_;
   std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame box holding every vertex so far, per body
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
-  std::vector<std::array<std::vector<int>, 2>> touching_;  // per pair (a<b): nodes of a, of b touching the other
+  std::vector<std::array<EngagedNodes, 2>> engaged_;  // per pair (a<b): nodes of a, of b engaged with the other
   std::vector<char> held_;  // per pair (a<b): friction left the slide under the null band in the last step
   // per ordered pair (slave * n + master): the normal impulse the master gave the slave in this
   // contact, master frame [N s]; cleared when the pair's bounds part
@@ -161,7 +169,7 @@ class ContactEngine {
   std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop
   std::vector<std::vector<Vec3>> pending_delta_;  // [m] per body: new Delta awaiting commit (n_vertices)
   std::vector<std::vector<int>> moved_;           // per body: nodes whose pending Delta awaits commit
-  std::vector<std::vector<char>> touching_mark_;  // per body: 1 for nodes touching the current master
+  std::vector<std::vector<char>> engaged_mark_;  // per body: the engagement of its nodes with the current master
   ContactOptions options_;
   int step_index_ = 0;
   // the last step's pair loads and the states they were applied at, until AccountWork books them
