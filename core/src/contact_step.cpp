@@ -329,9 +329,9 @@ std::vector<int> ContactEngine::CullCandidates(const PassFrame& f, int master, i
   return merged;
 }
 
-void ContactEngine::ProcessNode(const PassFrame& f, int v, char engagement, double dt, ChunkSums* out) {
+void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement, double dt, ChunkSums* out) {
   // locate, then restore and evaluate the node law
-  const bool was_touching = engagement == 1;
+  const bool was_touching = engagement == Engagement::kTouching;
   Located hit;
   const bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
   // spec §2 Location: against a rigid master (its surface does not move in its frame) a node in
@@ -346,7 +346,7 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, char engagement, doub
     if (LocateNode(f, v, was_touching, &pressed_on, &out->scratch, &again) && again.depth < hit.depth) hit = again;
   }
   if (found) ++out->diag.located;
-  if (!found && engagement == 0) return;
+  if (!found && engagement == Engagement::kNone) return;
   // whether the bodies still close on a node that found no face: along its last contact normal, or,
   // holding a spring, along its crush (the line the master pressed it along). spec §6: a held node
   // keeps its spring only while the master still comes at it; once it moves away from the master
@@ -355,7 +355,7 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, char engagement, doub
   // frontal's crushed fronts rubbed for 1.4 s after the main pulse and turned the p406's yaw rate
   // from 42 to 23 deg/s. The pair's normal impulse as the line released nodes that rotation carried
   // away during the main pulse: 2.0 % on the offset's delta-V with the p406 mesh 1:4)
-  const Vec3& line = engagement == 2 ? f.slave->delta[v] : f.slave->contact_normal[v];
+  const Vec3& line = engagement == Engagement::kHolding ? f.slave->delta[v] : f.slave->contact_normal[v];
   const bool closing_unfound = !found && hit.rel_velocity.dot(f.r_slave_to_master * line) < 0.0;
   // spec §6: such a node pressed on a rigid master (whose surface does not move in its frame) slid
   // past the face's edge: it springs back at most to the master's nearest surface; it cannot spring
@@ -420,17 +420,17 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
   // one parallel loop over fixed chunks of candidates; each chunk writes its own nodes and partials
   chunks_.resize(std::max(chunks_.size(), ChunkCount(candidates.size())));
   // nodes engaged at their last update, marked for constant-time look-up
-  std::vector<char>& mark = engaged_mark_[slave];
-  mark.resize(f.slave->vertices.size(), 0);
-  for (int v : engaged->touching) mark[v] = 1;
-  for (int v : engaged->holding) mark[v] = 2;
+  std::vector<Engagement>& mark = engaged_mark_[slave];
+  mark.resize(f.slave->vertices.size(), Engagement::kNone);
+  for (int v : engaged->touching) mark[v] = Engagement::kTouching;
+  for (int v : engaged->holding) mark[v] = Engagement::kHolding;
   ForEachChunk(candidates.size(), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     ChunkSums& out = chunks_[chunk];
     out.Clear();
     for (std::size_t i = begin; i < end; ++i) ProcessNode(f, candidates[i], mark[candidates[i]], dt, &out);
   });
-  for (int v : engaged->touching) mark[v] = 0;
-  for (int v : engaged->holding) mark[v] = 0;
+  for (int v : engaged->touching) mark[v] = Engagement::kNone;
+  for (int v : engaged->holding) mark[v] = Engagement::kNone;
 
   // determinism: partial sums and node lists folded serially in chunk order
   PassSums sums;

@@ -109,7 +109,7 @@ class ContactEngine {
     PassSums sums;
     ContactDiagnostics diag;
     std::vector<int> touching, holding, moved;  // ascending node indices
-    std::vector<Candidate> scratch;       // candidate triangles of one node
+    std::vector<Candidate> scratch;             // candidate triangles of one node
     void Clear() {
       sums = PassSums{};
       diag = ContactDiagnostics{};
@@ -118,8 +118,10 @@ class ContactEngine {
       moved.clear();
     }
   };
-  // the slave nodes of one side of a pair that stay in the pass's candidates: touching the master at
-  // their last update, or holding a spring the master closed on (both ascending)
+  // how a slave node met the master at its last update: carrying force, or held with a spring the
+  // master closed on (spec §6), or neither
+  enum class Engagement : char { kNone, kTouching, kHolding };
+  // the slave nodes of one side of a pair that stay in the pass's candidates (both ascending)
   struct EngagedNodes {
     std::vector<int> touching, holding;
   };
@@ -128,8 +130,7 @@ class ContactEngine {
   std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const EngagedNodes& engaged);
   // writes slave node v's own state (through RestoreNode), its contact normal and its pending Delta
   // (f.pending[v]); nothing of any other node (the parallel loop relies on it), sums into *out
-  // `engagement`: 1 touching at its last update, 2 holding a spring, 0 neither
-  void ProcessNode(const PassFrame& f, int v, char engagement, double dt, ChunkSums* out);
+  void ProcessNode(const PassFrame& f, int v, Engagement engagement, double dt, ChunkSums* out);
   // spec §7 Coulomb bounds on the pair's friction; true when it leaves the slide under the null band
   // (held in the next step)
   bool LimitFriction(double dt, PairLoads* pair) const;
@@ -145,7 +146,8 @@ class ContactEngine {
   double DistanceToMaster(const PassFrame& f, int v, double radius, std::vector<Candidate>* scratch) const;
   // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
   // step_start_deflection; the new Delta goes to *new_delta (committed later). Without a hit:
-  // `closing_unfound`, the bodies still close on the node along its last contact normal, and
+  // `closing_unfound`, the bodies still close on the node (along its last contact normal, or its crush
+  // while it holds a spring), and
   // `free_gap`, how far the node may spring back (the distance to a rigid master's surface).
   // *holding: the node was held with a spring still stored (spec §6)
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
@@ -169,7 +171,7 @@ class ContactEngine {
   std::vector<ChunkSums> chunks_;  // per-chunk scratch of the pass loop
   std::vector<std::vector<Vec3>> pending_delta_;  // [m] per body: new Delta awaiting commit (n_vertices)
   std::vector<std::vector<int>> moved_;           // per body: nodes whose pending Delta awaits commit
-  std::vector<std::vector<char>> engaged_mark_;  // per body: the engagement of its nodes with the current master
+  std::vector<std::vector<Engagement>> engaged_mark_;  // per body: its nodes' engagement with the current master
   ContactOptions options_;
   int step_index_ = 0;
   // the last step's pair loads and the states they were applied at, until AccountWork books them
