@@ -728,12 +728,12 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     touching = true;
   } else if ((hit ? receding < 0.0 : closing_unfound) && !f.master_model->rigid) {
     // spec §6: a node before a deformable master's face that still closes on it, or that found no
-    // face while the bodies close on it along its last contact normal (the master's own crush moved
-    // the face, or the node lies over a gap between the display mesh's panels), is held: no force,
-    // no spring, its branch of the law kept until the face reaches it; it springs back when the
-    // surfaces part. (Unloading it put it on the rebound curve, 10 % of the loading force at
-    // e = 0.1, reloaded from below its peak: on a 30 mph rear-end the real car meshes closed 47.8 in
-    // for 28.6 in of crush along the line of centres)
+    // face while the bodies close on it (along its last contact normal, or its crush while it holds
+    // a spring: ProcessNode), is held: the master's own crush moved the face, or the node lies over a
+    // gap between the display mesh's panels. No force, no spring, its branch of the law kept until the
+    // face reaches it; it springs back when the surfaces part. (Unloading it put it on the rebound
+    // curve, 10 % of the loading force at e = 0.1, reloaded from below its peak: on a 30 mph rear-end
+    // the real car meshes closed 47.8 in for 28.6 in of crush along the line of centres)
     held = true;
     if (can_spring && deflection > 0.0) ++diag->held_unfound;  // counted where it keeps a crush from springing
   } else if (can_spring && deflection > 0.0) {

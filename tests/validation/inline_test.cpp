@@ -73,7 +73,7 @@ TEST(Inline, MomentumDeltaVRestitutionAndEnergy) {
 // Real car meshes in line, the p406 at 30 mph into the rear of the stationary stock car, in a frame
 // turned `angle_deg` about the vertical; `contact`: the members of the scenario's contact object
 std::string RearEndJson(double angle_deg, const std::string& contact, double step, bool stock_first) {
-  const double a = angle_deg * 3.14159265358979323846 / 180.0;
+  const double a = angle_deg * u::kDegree;
   char p406[400], stock[200], json[1200];
   std::snprintf(p406, sizeof p406,
                 R"({"name": "p406", "vehicle": "vehicles/p406.json", "initial": {"position": [%.9f, %.9f, -22],
@@ -148,19 +148,20 @@ RearEnd RunRearEnd(const std::string& label, const std::string& json, int p406_s
 // give the p406 10-30 % more than its share (a known limit in the README), printed here
 TEST(Inline, RealCarMeshesCloseOnlyAsFarAsTheyCrush) {
   const std::string two = R"("passes_per_step": 2)";
+  auto run = [](const std::string& label, const std::string& json, int p406_subdivisions = 0) {
+    return std::pair<std::string, RearEnd>{label, RunRearEnd(label, json, p406_subdivisions)};
+  };
   const std::vector<std::pair<std::string, RearEnd>> runs = {
-      {"default", RunRearEnd("default", RearEndJson(0, two, 0.0005, false))},
-      {"dt/2", RunRearEnd("dt/2", RearEndJson(0, two, 0.00025, false))},
-      {"3 passes", RunRearEnd("3 passes", RearEndJson(0, R"("passes_per_step": 3)", 0.0005, false))},
-      {"4 passes", RunRearEnd("4 passes", RearEndJson(0, R"("passes_per_step": 4)", 0.0005, false))},
-      {"local average normal",
-       RunRearEnd("local average normal",
-                  RearEndJson(0, two + R"(, "search_direction": "local_average_normal")", 0.0005, false))},
-      {"polygon normal",
-       RunRearEnd("polygon normal", RearEndJson(0, two + R"(, "search_direction": "poly_normal")", 0.0005, false))},
-      {"p406 mesh 1:4", RunRearEnd("p406 mesh 1:4", RearEndJson(0, two, 0.0005, false), 1)},
-      {"stock car listed first", RunRearEnd("stock car listed first", RearEndJson(0, two, 0.0005, true))},
-      {"frame turned 30 deg", RunRearEnd("frame turned 30 deg", RearEndJson(30, two, 0.0005, false))},
+      run("default", RearEndJson(0, two, 0.0005, false)),
+      run("dt/2", RearEndJson(0, two, 0.00025, false)),
+      run("3 passes", RearEndJson(0, R"("passes_per_step": 3)", 0.0005, false)),
+      run("4 passes", RearEndJson(0, R"("passes_per_step": 4)", 0.0005, false)),
+      run("local average normal",
+          RearEndJson(0, two + R"(, "search_direction": "local_average_normal")", 0.0005, false)),
+      run("polygon normal", RearEndJson(0, two + R"(, "search_direction": "poly_normal")", 0.0005, false)),
+      run("p406 mesh 1:4", RearEndJson(0, two, 0.0005, false), 1),
+      run("stock car listed first", RearEndJson(0, two, 0.0005, true)),
+      run("frame turned 30 deg", RearEndJson(30, two, 0.0005, false)),
   };
   for (const auto& [label, r] : runs) {
     const double crush = r.c_p406 + r.c_stock;

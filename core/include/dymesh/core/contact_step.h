@@ -147,9 +147,8 @@ class ContactEngine {
   // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
   // step_start_deflection; the new Delta goes to *new_delta (committed later). Without a hit:
   // `closing_unfound`, the bodies still close on the node (along its last contact normal, or its crush
-  // while it holds a spring), and
-  // `free_gap`, how far the node may spring back (the distance to a rigid master's surface).
-  // *holding: the node was held with a spring still stored (spec §6)
+  // while it holds a spring), and `free_gap`, how far the node may spring back (the distance to a
+  // rigid master's surface). *holding: the node was held with a spring still stored (spec §6)
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding);
   void CommitPending(int body);
