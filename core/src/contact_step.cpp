@@ -765,7 +765,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   const double peak = s.delta_max[v];
   s.delta_max[v] = std::max(s.delta_max[v], new_deflection);
   if (!held) s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
-  const double area = touching ? ProjectedNodeArea(m, s, v, normal_slave) : s.node_area[v];
+  const double area = touching ? ContactNodeArea(m, s, v, normal_slave, hit->depth) : s.node_area[v];
   const double force =
       touching ? area * NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_) : 0.0;
 

@@ -110,18 +110,18 @@ Scenario CarToCar(int subdivisions, double duration) {
 }
 
 TEST(Determinism, BarrierAtAnyThreadCount) {
-  ExpectThreadCountIndependent(testing::BarrierScenario(30.0, 0.1, 0.0005), 0x5b16f2e8dc062a35ull);
+  ExpectThreadCountIndependent(testing::BarrierScenario(30.0, 0.1, 0.0005), 0xd52bd91a4cb8aa7cull);
 }
 
 TEST(Determinism, CarToCarRealMeshesAtAnyThreadCount) {
-  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0xd31142fe03f65b29ull);
+  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0xf428699700154114ull);
 }
 
 TEST(Determinism, HighPolygonCarToCarAtAnyThreadCount) {
   // about 137k and 72k triangles (two 1-to-4 subdivisions), the first 30 ms of the pulse (hash
   // renewed 2026-11-24: a node on a deformable master that loses its face while the bodies close is
   // held, not sprung)
-  ExpectThreadCountIndependent(CarToCar(2, 0.03), 0xd73068ecab4beb5bull);
+  ExpectThreadCountIndependent(CarToCar(2, 0.03), 0x88997394b0b9155dull);
 }
 
 }  // namespace
