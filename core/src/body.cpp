@@ -91,18 +91,21 @@ double InsideShareOfCorner0(double psi0, double psi1, double psi2) {
   const double x[3] = {0.0, 1.0, 0.0}, y[3] = {0.0, 0.0, 1.0}, psi[3] = {psi0, psi1, psi2};
   double px[4], py[4];
   int n = 0;
+  auto keep = [&](double kx, double ky) { px[n] = kx, py[n] = ky, ++n; };
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
-    if (psi[i] >= 0.0) px[n] = x[i], py[n++] = y[i];
+    if (psi[i] >= 0.0) keep(x[i], y[i]);
     if ((psi[i] >= 0.0) != (psi[j] >= 0.0)) {
       const double s = psi[i] / (psi[i] - psi[j]);
-      px[n] = x[i] + s * (x[j] - x[i]), py[n++] = y[i] + s * (y[j] - y[i]);
+      keep(x[i] + s * (x[j] - x[i]), y[i] + s * (y[j] - y[i]));
     }
   }
-  // integrate lambda0 = 1 - x - y over the clipped polygon (a fan of triangles), over the area 1/2
+  // integrate lambda0 = 1 - x - y over the clipped polygon (a fan of triangles: area x mean lambda0),
+  // over the area 1/2
   double integral = 0.0;
   for (int i = 1; i + 1 < n; ++i) {
-    const double area = 0.5 * std::abs((px[i] - px[0]) * (py[i + 1] - py[0]) - (px[i + 1] - px[0]) * (py[i] - py[0]));
+    const double ax = px[i] - px[0], ay = py[i] - py[0], bx = px[i + 1] - px[0], by = py[i + 1] - py[0];
+    const double area = 0.5 * std::abs(ax * by - bx * ay);
     integral += area * (3.0 - (px[0] + px[i] + px[i + 1]) - (py[0] + py[i] + py[i + 1])) / 3.0;
   }
   return integral / 0.5;
