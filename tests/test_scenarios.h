@@ -49,14 +49,20 @@ inline BodySpec RigidWall(double face_x_in) {
   return wall;
 }
 
+// an empty scenario in US units: its name in error messages, time step [s] and duration [s]
+inline Scenario UsScenario(const std::string& file, double time_step, double duration) {
+  Scenario s;
+  s.file = file;
+  s.units = UnitSystem::kUS;
+  s.time_step = time_step;
+  s.duration = duration;
+  return s;
+}
+
 // spec §4 test case: 66 in wide, 30 in high, 3000 lb, A = 300 lb/in, B = 100 lb/in^2, H = 30 in,
 // at `speed_mph` into a rigid wall 0.5 in ahead of its front face
 inline Scenario BarrierScenario(double speed_mph, double restitution, double time_step) {
-  Scenario s;
-  s.file = "(barrier test)";
-  s.units = UnitSystem::kUS;
-  s.time_step = time_step;
-  s.duration = 0.4;
+  Scenario s = UsScenario("(barrier test)", time_step, 0.4);
   s.contact.search_direction = SearchDirection::kVelocity;
   BodySpec car = BoxVehicle("box", 180, 66, 30, {1, 22, 10}, 3000, 300, 100, 30, restitution);
   car.initial.velocity = Vec3(speed_mph * u::kMph, 0, 0);

@@ -21,11 +21,7 @@ namespace u = dymesh::units;
 
 // 3000 lb at 30 mph into 4000 lb at rest, fronts 0.5 in apart, same stiffness, different grids
 Scenario InlineScenario(double restitution) {
-  Scenario s;
-  s.file = "(inline test)";
-  s.units = UnitSystem::kUS;
-  s.time_step = 0.0001;
-  s.duration = 0.4;
+  Scenario s = testing::UsScenario("(inline test)", 0.0001, 0.4);
   s.contact.search_direction = SearchDirection::kVelocity;
   BodySpec bullet = testing::BoxVehicle("bullet", 180, 66, 30, {1, 22, 10}, 3000, 300, 100, 30, restitution);
   bullet.initial.velocity = Vec3(30.0 * u::kMph, 0, 0);
