@@ -565,7 +565,7 @@ bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candida
   return true;
 }
 
-Vec3 ContactEngine::SearchLine(const PassFrame& f, const Vec3& v_rel, const Vec3& inward) const {
+Vec3 ContactEngine::SearchLine(const PassFrame& f, int v, const Vec3& v_rel, const Vec3& inward) const {
   // the search method's direction (spec §2), master frame, pointing into the slave; none for the
   // polygon normal (it searches along each triangle's own)
   switch (options_.search_direction) {
@@ -577,7 +577,7 @@ Vec3 ContactEngine::SearchLine(const PassFrame& f, const Vec3& v_rel, const Vec3
       }
       [[fallthrough]];  // no relative motion: fall back to the local normal
     case SearchDirection::kLocalAverageNormal:
-      return inward;
+      return -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
     case SearchDirection::kSpecified:
       return f.r_slave_to_master * options_.specified_direction.normalized();
     case SearchDirection::kPolyNormal:
@@ -594,8 +594,8 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   out->rel_velocity = v_rel;  // also when nothing is found (the spring-back asks whether the bodies close)
   const double backoff = options_.search_backoff, reach = options_.toofar_maximum;
 
-  // search direction (spec §2), pointing into the slave: it chooses the face; the push follows the face normal
-  const Vec3 inward = -(f.r_slave_to_master * LocalAverageNormal(*f.slave_model, *f.slave, v));
+  // the slave's inward side at the node, master frame (the surfaces must face each other)
+  const Vec3 inward = -(f.r_slave_to_master * AreaWeightedNormal(*f.slave_model, *f.slave, v));
   // a node in contact keeps meeting faces turned the same way (it left the last one through its
   // outside): a crushed-through panel's inner face does not take over and pull it in
   const Vec3 previous = was_touching ? Vec3(f.r_slave_to_master * f.slave->contact_normal[v]) : Vec3::Zero();
@@ -605,7 +605,8 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   // and held the bodies together: 600 lbf of pull for 0.3 s on the 45 deg demo). Approaching nodes
   // keep every face: a crushed zone's folds turn faces against the impulse
   const Vec3 parting = v_rel.dot(f.pushed) > 0.0 ? f.pushed : Vec3::Zero();
-  const Vec3 dir = along ? *along : SearchLine(f, v_rel, inward);
+  // search direction (spec §2), pointing into the slave: it chooses the face; the push follows the face normal
+  const Vec3 dir = along ? *along : SearchLine(f, v, v_rel, inward);
   const bool poly_normal = !along && options_.search_direction == SearchDirection::kPolyNormal;
   if (!poly_normal && dir.squaredNorm() == 0.0) return false;
 

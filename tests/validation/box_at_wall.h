@@ -40,6 +40,7 @@ inline std::vector<NamedArrangement> ArrangementVariants() {
           {"1 pass", {1}},
           {"4 passes", {4}},
           {"specified", {2, SearchDirection::kSpecified}},
+          {"local average normal", {2, SearchDirection::kLocalAverageNormal}},
           {"polygon normal", {2, SearchDirection::kPolyNormal}},
           {"wall listed first", {2, SearchDirection::kVelocity, true}},
           {"frame +30 deg", {2, SearchDirection::kVelocity, false, 30.0}},

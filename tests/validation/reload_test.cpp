@@ -63,9 +63,7 @@ TEST(Reload, FrontNodesFollowTheWallAtAnyStep) {
   const double expected = 66.0 * 30.0 * (300.0 / 30.0 + 100.0 / 30.0 * (4.5 - 0.5));
   // 1 ms steps close 0.6 in each: more than the 0.25 in allowance, so the reload relies on the
   // approach term; 0.25 ms close 0.15 in. Every pass meets the wall (a rigid master), so the
-  // spring-back while backing off must not repeat per pass. (Not the local average normal: on this
-  // box, one segment long, a front edge node's normal is nearly its 180 in side's, so its ray runs
-  // almost along the wall and never meets it, whatever the step)
+  // spring-back while backing off must not repeat per pass.
   std::vector<Variant> setups = {{"allowance 0.05 in", 0.05}};
   for (const auto& a : testing::ArrangementVariants()) setups.push_back({a.name, 0.25, a.arrangement});
   for (double dt : {0.001, 0.0005, 0.00025}) {

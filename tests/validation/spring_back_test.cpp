@@ -56,14 +56,17 @@ AfterTheWallLeaves Measure(const Variant& setup, bool closing) {
 }
 
 TEST(SpringBack, NoFurtherThanTheSurfaceWhileClosingFreelyOnceParting) {
-  // Not the local average normal: this box's front edge nodes never meet the wall with it (README →
-  // Known limits). The polygon normal searches along each face's own normal: the edge column finds the
+  // Not the local average normal: the front's edge column looks halfway between the front and the
+  // side, and its ray back meets the wall's side face 0.2 in beside it within the search backoff, so
+  // those nodes still count as on a face (368 lbf closing; parting, 1.2 in short of their spring:
+  // README → Known limits). The polygon normal searches along each face's own normal: the edge column finds the
   // wall's side face 0.2 in away (outside); its spring, back along its crush, runs along that face, so
   // it does not meet it (it counted as touching until 2026-11-24: about 22,700 lbf on the box). The
   // spring is bounded once per step (it used to spring again with every pass: 0.4 in with two
   // passes, 0.8 in with four)
   std::vector<Variant> setups = {{"dt/2", 0.00025}, {"polygon normal, 4 passes", 0.0005, {4, SearchDirection::kPolyNormal}}};
-  for (const auto& a : testing::ArrangementVariants()) setups.push_back({a.name, 0.0005, a.arrangement});
+  for (const auto& a : testing::ArrangementVariants())
+    if (a.arrangement.search != SearchDirection::kLocalAverageNormal) setups.push_back({a.name, 0.0005, a.arrangement});
   for (const Variant& setup : setups) {
     const AfterTheWallLeaves closing = Measure(setup, true), parting = Measure(setup, false);
     std::printf("[measured] spring-back, %s: closing worst error %.2e in, parting %.2e in; load %.3g, %.3g lbf\n",

@@ -15,6 +15,9 @@ struct BodyModel {
   std::string name;
   TriMesh mesh;                      ///< rest (undamaged) mesh in the body frame, origin at the CG [m]
   VertexTriangles vertex_triangles;  ///< CSR adjacency of `mesh`
+  /// [rad/m^2] per adjacency entry k (parallel to vertex_triangles.ids): the triangle's rest angle
+  /// at the vertex over its rest area, the local average normal's weight per unit current area
+  std::vector<double> normal_weight;
   std::vector<BodySurface> surface;  ///< surface class per vertex (n_vertices)
   std::array<Stiffness, kBodySurfaceCount> stiffness{};  ///< per-area stiffness by surface
   double mass = 0.0;                 ///< [kg]
@@ -70,7 +73,13 @@ BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid);
 /// Recomputes normal, centre and area of every triangle touching `vertices` (body frame).
 void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, BodyState* state);
 
-/// Area-weighted average outward normal of vertex v (USE_LOCAL_AVERAGE_NORMAL), body frame, unit.
+/// Outward normal of vertex v, body frame, unit: the area-weighted mean of the surrounding triangle
+/// normals (which way the node's surface faces: facing tests, surface class).
+Vec3 AreaWeightedNormal(const BodyModel& model, const BodyState& state, int v);
+
+/// Search direction of USE_LOCAL_AVERAGE_NORMAL at vertex v, body frame, unit: each surrounding
+/// triangle's normal weighted by its rest angle at v, times the share of its rest area it keeps, so a
+/// node on an edge looks halfway between its faces however they are meshed.
 Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& state, int v);
 
 /// Contact area A_v of spec §3 for slave vertex v pressed against a master whose outward normal at

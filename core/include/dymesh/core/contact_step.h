@@ -135,7 +135,7 @@ class ContactEngine {
   // (held in the next step)
   bool LimitFriction(double dt, PairLoads* pair) const;
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
-  Vec3 SearchLine(const PassFrame& f, const Vec3& v_rel, const Vec3& inward) const;
+  Vec3 SearchLine(const PassFrame& f, int v, const Vec3& v_rel, const Vec3& inward) const;
   // `along`: a search direction (master frame) instead of the method's, or null
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
                   Located* out) const;

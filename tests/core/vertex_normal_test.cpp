@@ -1,0 +1,59 @@
+// The vertex normals against closed forms on a box: the local average normal (the search direction of
+// USE_LOCAL_AVERAGE_NORMAL) of a node on an edge or corner does not depend on how the faces are cut.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dymesh/core/body.h"
+
+namespace dymesh {
+namespace {
+
+// a 180 x 66 x 30 in box (in metres) with `length_segments` along x, 22 across, 10 up
+BodyModel Box(int length_segments) {
+  return MakeBodyModel("box", MakeBox(4.572, 1.6764, 0.762, length_segments, 22, 10), {}, 1.0, Mat3::Identity(),
+                       0.0, 0.0, false);
+}
+
+// the vertex of `model` at `p` [m]
+int VertexAt(const BodyModel& model, const Vec3& p) {
+  for (size_t v = 0; v < model.mesh.vertices.size(); ++v)
+    if ((model.mesh.vertices[v] - p).norm() < 1e-9) return static_cast<int>(v);
+  ADD_FAILURE() << "no vertex at " << p.transpose();
+  return 0;
+}
+
+TEST(LocalAverageNormal, EdgesAndCornersLookHalfwayBetweenTheirFacesHoweverTheFacesAreCut) {
+  // each face counts by its angle at the node: a node on the front-right edge has 180 degrees of the
+  // front and 180 of the side, so its normal is their bisector (1, 1, 0)/sqrt 2; a corner has 90
+  // degrees of each of three faces, (1, 1, 1)/sqrt 3. Tolerance: round-off of the angle sums.
+  const Vec3 edge(2.286, 0.8382, 0.0), corner(2.286, 0.8382, 0.381);
+  for (int segments : {1, 60}) {
+    const BodyModel model = Box(segments);
+    const BodyState rest = MakeBodyState(model, RigidState{});
+    EXPECT_LT((LocalAverageNormal(model, rest, VertexAt(model, edge)) - Vec3(1, 1, 0).normalized()).norm(), 1e-12)
+        << segments << " along";
+    EXPECT_LT((LocalAverageNormal(model, rest, VertexAt(model, corner)) - Vec3(1, 1, 1).normalized()).norm(), 1e-12)
+        << segments << " along";
+  }
+  // by area, the strip's 180 in long side triangles (270 in^2 against the front's 4.5 in^2) turn the
+  // edge node nearly sideways: the search would run along the face in front of it
+  const BodyModel strip = Box(1);
+  const Vec3 by_area = AreaWeightedNormal(strip, MakeBodyState(strip, RigidState{}), VertexAt(strip, edge));
+  EXPECT_GT(by_area.y(), 0.99);
+}
+
+TEST(LocalAverageNormal, AFaceCrushedFlatDropsOut) {
+  // each face's weight is its rest angle times the share of its rest area it keeps: squash the front
+  // face's cells at the edge node to no area and only the side is left
+  const BodyModel model = Box(60);
+  BodyState s = MakeBodyState(model, RigidState{});
+  const int v = VertexAt(model, Vec3(2.286, 0.8382, 0.0));
+  const auto& adj = model.vertex_triangles;
+  for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k)
+    if (s.tri_normal[adj.ids[k]].x() > 0.5) s.tri_area[adj.ids[k]] = 0.0;
+  EXPECT_LT((LocalAverageNormal(model, s, v) - Vec3(0, 1, 0)).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace dymesh
