@@ -8,39 +8,25 @@ namespace dymesh {
 
 namespace {
 
-// interior angle of triangle `tri` at its corner v [rad]
-double CornerAngle(const std::array<int, 3>& tri, const std::vector<Vec3>& vertices, int v) {
+// rest angle of triangle t at its corner v over its rest area [rad/m^2] (0 for a degenerate one)
+double RestAnglePerArea(const BodyModel& model, int t, int v) {
+  const auto& tri = model.mesh.triangles[t];
+  const auto& rest = model.mesh.vertices;
   const int i = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-  const Vec3 a = vertices[tri[(i + 1) % 3]] - vertices[v];
-  const Vec3 b = vertices[tri[(i + 2) % 3]] - vertices[v];
-  return std::atan2(a.cross(b).norm(), a.dot(b));
+  const Vec3 a = rest[tri[(i + 1) % 3]] - rest[v];
+  const Vec3 b = rest[tri[(i + 2) % 3]] - rest[v];
+  const double twice_area = a.cross(b).norm();
+  return twice_area > 0.0 ? std::atan2(twice_area, a.dot(b)) / (0.5 * twice_area) : 0.0;
 }
 
-// the local average normal's weights (BodyModel::normal_weight): at rest each face counts by its
-// angle at the node, so a node on a box's edge points halfway between the two faces however either
-// is cut (by area, a strip-meshed side's long triangles turned it sideways); a crushed face counts
-// by the share of its area it keeps, as by area before
-std::vector<double> LocalNormalWeights(const TriMesh& mesh, const VertexTriangles& adj) {
-  std::vector<double> weight(adj.ids.size(), 0.0);
-  for (size_t v = 0; v + 1 < adj.offsets.size(); ++v) {
-    for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
-      const auto& tri = mesh.triangles[adj.ids[k]];
-      const double area = 0.5 * TriangleCross(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]).norm();
-      if (area > 0.0) weight[k] = CornerAngle(tri, mesh.vertices, static_cast<int>(v)) / area;
-    }
-  }
-  return weight;
-}
-
-// unit mean of the triangle normals around v, each weighted by its current area times weight(k)
-// (k: its adjacency entry)
+// unit mean of the triangle normals around v, each weighted by its current area times weight(t)
 template <class Weight>
 Vec3 MeanNormal(const BodyModel& model, const BodyState& s, int v, Weight weight) {
   const auto& adj = model.vertex_triangles;
   Vec3 sum = Vec3::Zero();
   for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
     const int t = adj.ids[k];
-    sum += (weight(k) * s.tri_area[t]) * s.tri_normal[t];
+    sum += (weight(t) * s.tri_area[t]) * s.tri_normal[t];
   }
   const double len = sum.norm();
   return len > 0.0 ? Vec3(sum / len) : Vec3::Zero();
@@ -54,7 +40,6 @@ BodyModel MakeBodyModel(std::string name, TriMesh mesh, const std::array<Stiffne
   m.name = std::move(name);
   m.mesh = std::move(mesh);
   m.vertex_triangles = BuildVertexTriangles(m.mesh);
-  m.normal_weight = LocalNormalWeights(m.mesh, m.vertex_triangles);
   m.stiffness = stiffness;
   m.mass = mass;
   m.inertia = inertia;
@@ -118,7 +103,11 @@ Vec3 AreaWeightedNormal(const BodyModel& model, const BodyState& s, int v) {
 }
 
 Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& s, int v) {
-  return MeanNormal(model, s, v, [&](int k) { return model.normal_weight[k]; });
+  // at rest each face counts by its angle at the node, so a node on a box's edge points halfway
+  // between the two faces however either is cut (by area, a strip-meshed side's long triangles
+  // turned it sideways); a crushed face counts by the share of its rest area it keeps. Computed per
+  // call from the rest mesh (only this search method asks; kept, it would cost 24 bytes per triangle)
+  return MeanNormal(model, s, v, [&](int t) { return RestAnglePerArea(model, t, v); });
 }
 
 namespace {

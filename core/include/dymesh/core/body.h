@@ -15,9 +15,6 @@ struct BodyModel {
   std::string name;
   TriMesh mesh;                      ///< rest (undamaged) mesh in the body frame, origin at the CG [m]
   VertexTriangles vertex_triangles;  ///< CSR adjacency of `mesh`
-  /// [rad/m^2] per adjacency entry k (parallel to vertex_triangles.ids): the triangle's rest angle
-  /// at the vertex over its rest area, the local average normal's weight per unit current area
-  std::vector<double> normal_weight;
   std::vector<BodySurface> surface;  ///< surface class per vertex (n_vertices)
   std::array<Stiffness, kBodySurfaceCount> stiffness{};  ///< per-area stiffness by surface
   double mass = 0.0;                 ///< [kg]
