@@ -8,11 +8,14 @@ namespace dymesh {
 
 namespace {
 
+// which corner (0, 1, 2) of triangle `tri` vertex v is
+int CornerOf(const std::array<int, 3>& tri, int v) { return tri[0] == v ? 0 : tri[1] == v ? 1 : 2; }
+
 // rest angle of triangle t at its corner v over its rest area [rad/m^2] (0 for a degenerate one)
 double RestAnglePerArea(const BodyModel& model, int t, int v) {
   const auto& tri = model.mesh.triangles[t];
   const auto& rest = model.mesh.vertices;
-  const int i = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+  const int i = CornerOf(tri, v);
   const Vec3 a = rest[tri[(i + 1) % 3]] - rest[v];
   const Vec3 b = rest[tri[(i + 2) % 3]] - rest[v];
   const double twice_area = a.cross(b).norm();
@@ -103,7 +106,7 @@ Vec3 AreaWeightedNormal(const BodyModel& model, const BodyState& s, int v) {
 }
 
 Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& s, int v) {
-  // at rest each face counts by its angle at the node, so a node on a box's edge points halfway
+  // spec §2 USE_LOCAL_AVERAGE_NORMAL: at rest each face counts by its angle at the node, so a node on a box's edge points halfway
   // between the two faces however either is cut (by area, a strip-meshed side's long triangles
   // turned it sideways); a crushed face counts by the share of its rest area it keeps. Computed per
   // call from the rest mesh (only this search method asks; kept, it would cost 24 bytes per triangle)
@@ -154,7 +157,7 @@ double ContactNodeArea(const BodyModel& model, const BodyState& s, int v, const 
     if (facing <= 0.0) continue;
     // v's share of the face where its rest shape overlaps the master (a third of a face wholly inside)
     const auto& tri = model.mesh.triangles[t];
-    const int at = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+    const int at = CornerOf(tri, v);
     const double share = InsideShareOfCorner0(rest_depth(tri[at]), rest_depth(tri[(at + 1) % 3]),
                                               rest_depth(tri[(at + 2) % 3]));
     area += s.tri_area[t] * facing * share;

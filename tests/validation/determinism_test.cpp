@@ -119,8 +119,7 @@ TEST(Determinism, CarToCarRealMeshesAtAnyThreadCount) {
 
 TEST(Determinism, HighPolygonCarToCarAtAnyThreadCount) {
   // about 137k and 72k triangles (two 1-to-4 subdivisions), the first 30 ms of the pulse (hash
-  // renewed 2026-11-24: a node on a deformable master that loses its face while the bodies close is
-  // held, not sprung)
+  // renewed in the 16th session: the node area counts only the part of a face in contact)
   ExpectThreadCountIndependent(CarToCar(2, 0.03), 0x88997394b0b9155dull);
 }
 
