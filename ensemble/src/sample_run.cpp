@@ -24,6 +24,7 @@ void AddOutputs(const BodySummary& b, const OutputUnits& u, std::map<std::string
   (*out)[b.name + ".peak_acceleration_g"] = b.peak_accel / units::kStandardGravity;
   (*out)[b.name + ".max_crush"] = b.max_crush * u.length;
   (*out)[b.name + ".crush_energy"] = b.crush_energy * u.energy;
+  (*out)[b.name + ".final_yaw_rate_deg_s"] = b.final_yaw_rate * kRadToDeg;  // the spin the impact leaves
 }
 
 Json Vector(const Vec3& v, double scale) { return {v.x() * scale, v.y() * scale, v.z() * scale}; }
@@ -37,7 +38,8 @@ Json BodyJson(const BodySummary& b, const RigidState& final_state, const OutputU
           {"average_acceleration_g", b.average_accel / units::kStandardGravity}, {"max_crush", b.max_crush * u.length},
           {"crush_energy", b.crush_energy * u.energy}, {"c", c},
           {"final_position", Vector(final_state.position, u.length)},
-          {"final_heading_deg", final_state.yaw * kRadToDeg}, {"final_velocity", Vector(final_state.velocity, u.speed)}};
+          {"final_heading_deg", final_state.yaw * kRadToDeg}, {"final_velocity", Vector(final_state.velocity, u.speed)},
+          {"final_yaw_rate_deg_s", b.final_yaw_rate * kRadToDeg}};
 }
 
 // the fields every record has, whatever became of the sample

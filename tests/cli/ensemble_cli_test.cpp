@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -176,13 +177,23 @@ TEST_F(Ensemble, KilledRunResumesToTheSameBytes) {
 }
 
 TEST_F(Ensemble, ReplayGivesTheRecordAndTheFullOutputs) {
-  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 8);
+  // the box arrives spinning, so it leaves with a yaw rate the record must carry
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 8, "latin_hypercube", R"(,
+      {"name": "spin", "path": "bodies[0].initial.yaw_rate", "distribution": {"uniform": {"low": 20, "high": 40}}})");
   ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "all").string()}).exit_code, 0);
   const ProcessResult r = Dymesh({"ensemble", "replay", spec, "--index", "5", "--out", (dir_ / "five").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(ReadFile(dir_ / "five" / "record.json"), Line(dir_ / "all" / "samples.jsonl", 5) + "\n");
   for (const char* name : {"summary.json", "report.html", "history.csv", "box_deformed.ply"})
     EXPECT_TRUE(fs::exists(dir_ / "five" / name)) << name;
+  // the yaw rate it leaves with: the record's, the single run's and the statistics' output agree
+  const nlohmann::json record = nlohmann::json::parse(ReadFile(dir_ / "five" / "record.json"));
+  const nlohmann::json summary = nlohmann::json::parse(ReadFile(dir_ / "five" / "summary.json"));
+  const double yaw_rate = record["bodies"][0]["final_yaw_rate_deg_s"].get<double>();
+  EXPECT_EQ(yaw_rate, summary["bodies"][0]["final_yaw_rate_deg_s"].get<double>());
+  EXPECT_GT(std::abs(yaw_rate), 1.0);
+  const nlohmann::json stats = nlohmann::json::parse(ReadFile(dir_ / "all" / "ensemble.json"));
+  EXPECT_EQ(stats["outputs"]["box.final_yaw_rate_deg_s"]["n"].get<int>(), 8);
   const ProcessResult bad = Dymesh({"ensemble", "replay", spec, "--index", "8", "--out", (dir_ / "x").string()});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--index: expected a sample index in 0..7, got 8"), std::string::npos) << bad.err;
