@@ -118,6 +118,9 @@ namespace {
 // Integral of corner 0's barycentric weight over the part of a triangle where the linear field psi
 // (psi0..psi2 at its corners) is positive, as a fraction of the triangle's area (1/3 when all of it is)
 double InsideShareOfCorner0(double psi0, double psi1, double psi2) {
+  // wholly inside or wholly outside (most faces): the clip below gives exactly these
+  if (psi0 >= 0.0 && psi1 >= 0.0 && psi2 >= 0.0) return 1.0 / 3.0;
+  if (psi0 < 0.0 && psi1 < 0.0 && psi2 < 0.0) return 0.0;
   // clip the reference triangle (0,0) (1,0) (0,1) to psi >= 0 (Sutherland-Hodgman, one half-plane)
   const double x[3] = {0.0, 1.0, 0.0}, y[3] = {0.0, 0.0, 1.0}, psi[3] = {psi0, psi1, psi2};
   double px[4], py[4];
