@@ -26,7 +26,7 @@ bool SummaryFinite(const Summary& s) {
   for (const BodySummary& b : s.bodies)
     ok = ok && std::isfinite(b.delta_v + b.pdof_deg + b.peak_accel + b.average_accel + b.max_crush +
                              b.max_dynamic_crush + b.crush_energy + b.friction_energy + b.law_energy +
-                             b.final_yaw_rate) &&
+                             b.final_yaw_rate + b.peak_contact_area) &&
          b.delta_v_earth.allFinite() && b.final_velocity.allFinite();
   return ok;
 }

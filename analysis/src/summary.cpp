@@ -44,7 +44,10 @@ BodySummary SummarizeBody(const Simulation& sim, int i) {
   const int clock = static_cast<int>(std::lround((b.pdof_deg < 0 ? b.pdof_deg + 360.0 : b.pdof_deg) / 30.0)) % 12;
   b.pdof_clock = clock == 0 ? 12 : clock;
   // pulse: peak resultant acceleration, average over the contact duration
-  for (const Sample& s : sim.history()) b.peak_accel = std::max(b.peak_accel, s.bodies[i].accel_body.norm());
+  for (const Sample& s : sim.history()) {
+    b.peak_accel = std::max(b.peak_accel, s.bodies[i].accel_body.norm());
+    b.peak_contact_area = std::max(b.peak_contact_area, s.bodies[i].contact_area);
+  }
   const double duration = sim.last_contact_time() - sim.first_contact_time();
   b.average_accel = duration > 0.0 ? b.delta_v / duration : 0.0;
   // crush: largest permanent and dynamic deformation, and where

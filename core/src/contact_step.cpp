@@ -480,10 +480,13 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
   // each pass estimates the whole interface load from its slave's nodes; estimates are weighted by
   // the contact area the slave saw, so a side whose mesh cannot resolve the contact counts less
   double area = 0.0;
+  int slave_passes[2] = {0, 0};
   for (const PassSums& p : sums) area += p.touching_area;
   for (const PassSums& p : sums) {
     const int ks = p.slave == a ? 0 : 1, km = 1 - ks;
     out.law_energy[ks] += p.law_energy;
+    out.contact_area[ks] += p.touching_area;
+    ++slave_passes[ks];
     if (area <= 0.0) continue;
     const double w = p.touching_area / area;
     out.normal_force[ks] += w * p.normal.force_slave;
@@ -495,6 +498,9 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
     out.friction_force[km] -= w * p.friction.force_slave;
     out.friction_moment[km] += w * p.friction.moment_master;
   }
+  // each side's own view of the contact area: what its nodes met, per pass
+  for (int k = 0; k < 2; ++k)
+    if (slave_passes[k] > 0) out.contact_area[k] /= slave_passes[k];
   return out;
 }
 

@@ -153,6 +153,9 @@ void Simulation::Record(const StepResult* step) {
       b.loads = step->loads[i];
       const double mass = engine_->model(i).mass;
       if (mass > 0.0) b.accel_body = b.loads.force_body / mass;
+      for (const PairLoads& p : step->pairs)
+        for (int k = 0; k < 2; ++k)
+          if (p.body[k] == i) b.contact_area += p.contact_area[k];
     }
     b.law_energy = s.law_energy;
     b.crush_energy = s.crush_energy;

@@ -21,7 +21,7 @@ std::string HistoryCsv(const Simulation& sim) {
         << n << "fx_body[" << u.force_name << "]," << n << "fy_body[" << u.force_name << "]," << n << "fz_body["
         << u.force_name << "]," << n << "mz_body[" << u.moment_name << "]," << n << "crush_energy["
         << u.energy_name << "]," << n << "friction_energy[" << u.energy_name << "]," << n << "kinetic_energy["
-        << u.energy_name << "]";
+        << u.energy_name << "]," << n << "contact_area[" << u.length_name << "^2]";
   }
   csv << '\n';
   const double g = units::kStandardGravity;
@@ -36,7 +36,8 @@ std::string HistoryCsv(const Simulation& sim) {
           << b.loads.force_body.x() * u.force << ',' << b.loads.force_body.y() * u.force << ','
           << b.loads.force_body.z() * u.force << ',' << b.loads.moment_body.z() * u.moment << ','
           << b.crush_energy * u.energy << ',' << b.friction_energy * u.energy << ','
-          << KineticEnergy(sim.engine().model(i), b.rigid) * u.energy;
+          << KineticEnergy(sim.engine().model(i), b.rigid) * u.energy << ','
+          << b.contact_area * u.length * u.length;
     }
     csv << '\n';
   }

@@ -119,14 +119,15 @@ TEST_F(BarrierRun, HistoryHeaderNamesEveryColumnAndUnit) {
   std::string header, first;
   std::getline(in, header);
   std::getline(in, first);
-  // time plus 16 quantities per body, each "name[unit]"
+  // time plus 17 quantities per body, each "name[unit]"
   std::vector<std::string> columns;
   std::stringstream ss(header);
   for (std::string c; std::getline(ss, c, ',');) columns.push_back(c);
-  ASSERT_EQ(columns.size(), 1u + 16u * 2u);
+  ASSERT_EQ(columns.size(), 1u + 17u * 2u);
   const std::regex named(R"(^[A-Za-z0-9_.]+\[[^\]]+\]$)");
   for (const std::string& c : columns) EXPECT_TRUE(std::regex_match(c, named)) << c;
   EXPECT_EQ(columns[16], "box.kinetic_energy[ft*lbf]");
+  EXPECT_EQ(columns[17], "box.contact_area[in^2]");
   // kinetic energy at t = 0: 3000 lb at 30 mph
   std::vector<double> values;
   std::stringstream fs_(first);

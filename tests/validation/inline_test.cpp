@@ -66,6 +66,20 @@ TEST(Inline, MomentumDeltaVRestitutionAndEnergy) {
               s.separation_speed / s.closing_speed, -dv1, (1 + e) * m2 / (m1 + m2) * v, 100 * s.energy_balance_error);
 }
 
+TEST(Inline, EachBodysContactAreaIsTheFrontFace) {
+  // the fronts (66 x 30 in on both, meshed 3.00 x 3.00 in and 3.14 x 3.33 in) meet whole and crush
+  // evenly in line, so each body's own nodes carry the whole face: A = 66 x 30 = 1980 in^2, a third of
+  // every front triangle per corner (spec §3); the side panels stay in their planes (facing exactly 0).
+  // 1e-9: round-off of the summed triangle areas
+  const Summary s = RunInline(0.15);
+  const double face = 66.0 * 30.0 * u::kInch * u::kInch;
+  for (const BodySummary& b : s.bodies) {
+    EXPECT_NEAR(b.peak_contact_area, face, 1e-9 * face) << b.name;
+    std::printf("[measured] inline: %s peak contact area %.6f in^2 (front face 1980)\n", b.name.c_str(),
+                b.peak_contact_area / (u::kInch * u::kInch));
+  }
+}
+
 // Real car meshes in line, the p406 at 30 mph into the rear of the stationary stock car, in a frame
 // turned `angle_deg` about the vertical; `contact`: the members of the scenario's contact object
 std::string RearEndJson(double angle_deg, const std::string& contact, double step, bool stock_first) {

@@ -24,6 +24,7 @@ struct BodySummary {
   int max_crush_vertex = -1;
   Vec3 max_crush_location{0, 0, 0};  ///< [m] body frame (undamaged position)
   double max_dynamic_crush = 0.0;    ///< [m] largest DeltaMaxTotal
+  double peak_contact_area = 0.0;    ///< [m^2] largest area of the body's own nodes in contact in a step
   double crush_energy = 0.0;     ///< [J] ledger: share of the normal contact work
   double friction_energy = 0.0;  ///< [J] ledger: share of the friction work
   double law_energy = 0.0;       ///< [J] work of the node law on this body's nodes

@@ -44,6 +44,9 @@ struct PairLoads {
   Vec3 friction_force[2] = {Vec3::Zero(), Vec3::Zero()};   ///< [N] earth frame
   Vec3 friction_moment[2] = {Vec3::Zero(), Vec3::Zero()};  ///< [N m] earth frame
   double law_energy[2] = {0.0, 0.0};  ///< [J] node-law work on body[k]'s nodes over the step
+  /// [m^2] contact area of body[k]'s own nodes carrying force against the other (spec §3 A_v summed),
+  /// the mean over the step's passes in which body[k] was the slave; 0 for a rigid body (never a slave)
+  double contact_area[2] = {0.0, 0.0};
 };
 
 /// What one contact step produced.

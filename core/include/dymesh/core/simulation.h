@@ -23,6 +23,7 @@ struct BodySample {
   double law_energy = 0.0;      ///< [J] cumulative node-law work on the nodes
   double crush_energy = 0.0;    ///< [J] cumulative ledger crush (normal contact) work
   double friction_energy = 0.0; ///< [J] cumulative ledger friction work
+  double contact_area = 0.0;    ///< [m^2] area of the body's own nodes in contact over the step (PairLoads)
 };
 
 /// One recorded instant.
