@@ -106,10 +106,11 @@ Vec3 AreaWeightedNormal(const BodyModel& model, const BodyState& s, int v) {
 }
 
 Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& s, int v) {
-  // spec §2 USE_LOCAL_AVERAGE_NORMAL: at rest each face counts by its angle at the node, so a node on a box's edge points halfway
-  // between the two faces however either is cut (by area, a strip-meshed side's long triangles
-  // turned it sideways); a crushed face counts by the share of its rest area it keeps. Computed per
-  // call from the rest mesh (only this search method asks; kept, it would cost 24 bytes per triangle)
+  // spec §2 USE_LOCAL_AVERAGE_NORMAL: at rest each face counts by its angle at the node, so a node
+  // on a box's edge points halfway between the two faces however either is cut (by area, a
+  // strip-meshed side's long triangles turned it sideways); a crushed face counts by the share of its
+  // rest area it keeps. Computed per call from the rest mesh (only this search method asks; kept, it
+  // would cost 24 bytes per triangle)
   return MeanNormal(model, s, v, [&](int t) { return RestAnglePerArea(model, t, v); });
 }
 

@@ -46,7 +46,8 @@ TEST(Barrier, MaximumCrushMatchesClosedForm) {
   EXPECT_LT(std::abs(s.separation_speed), 0.05 * s.closing_speed);
   // crush energy accounts for the kinetic energy lost
   EXPECT_NEAR(s.energy_balance_error, 0.0, 0.01);
-  // the whole 66 x 30 in front carries the load; the rigid wall has no nodes of its own in contact
+  // the whole 66 x 30 in front carries the load (a third of every front triangle per corner, spec §3;
+  // 1e-9: round-off of the summed triangle areas); the rigid wall has no nodes of its own in contact
   const double face = 66.0 * 30.0 * u::kInch * u::kInch;
   EXPECT_NEAR(s.bodies[0].peak_contact_area, face, 1e-9 * face);
   EXPECT_EQ(s.bodies[1].peak_contact_area, 0.0);
