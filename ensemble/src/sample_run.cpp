@@ -25,6 +25,7 @@ void AddOutputs(const BodySummary& b, const OutputUnits& u, std::map<std::string
   (*out)[b.name + ".max_crush"] = b.max_crush * u.length;
   (*out)[b.name + ".crush_energy"] = b.crush_energy * u.energy;
   (*out)[b.name + ".final_yaw_rate_deg_s"] = b.final_yaw_rate * kRadToDeg;  // the spin the impact leaves
+  (*out)[b.name + ".peak_contact_area"] = b.peak_contact_area * u.length * u.length;  // what its nodes met
 }
 
 Json Vector(const Vec3& v, double scale) { return {v.x() * scale, v.y() * scale, v.z() * scale}; }
@@ -39,7 +40,8 @@ Json BodyJson(const BodySummary& b, const RigidState& final_state, const OutputU
           {"crush_energy", b.crush_energy * u.energy}, {"c", c},
           {"final_position", Vector(final_state.position, u.length)},
           {"final_heading_deg", final_state.yaw * kRadToDeg}, {"final_velocity", Vector(final_state.velocity, u.speed)},
-          {"final_yaw_rate_deg_s", b.final_yaw_rate * kRadToDeg}};
+          {"final_yaw_rate_deg_s", b.final_yaw_rate * kRadToDeg},
+          {"peak_contact_area", b.peak_contact_area * u.length * u.length}};
 }
 
 // the fields every record has, whatever became of the sample

@@ -13,6 +13,9 @@ namespace {
 // layout of a line plot [px]
 constexpr int kMinLeft = 56, kRight = 18, kTop = 52, kBottom = 44;
 constexpr const char* kFont = "font-family=\"sans-serif\"";
+// a span under this fraction of its values' magnitude is flat: ticks counted in its steps from the
+// values stay far below 2^53, where adding one to the count would no longer move it
+constexpr double kFlatSpan = 1e-9;
 
 // the data range of a plot: x and y limits with their ticks
 struct Axes {
@@ -42,12 +45,15 @@ void DataRange(const LinePlot& plot, double* x0, double* x1, double* y0, double*
   if (plot.include_zero) *y0 = std::min(*y0, 0.0), *y1 = std::max(*y1, 0.0);
 }
 
-// limits widened to whole ticks (y) or kept as the data (x); an empty span gets a unit span
+// a span no wider than the round-off of its values (an output constant to its last digits)
+bool Flat(double lo, double hi) { return !(hi - lo > kFlatSpan * std::max(std::abs(lo), std::abs(hi))); }
+
+// limits widened to whole ticks (y) or kept as the data (x); an empty or flat span gets a unit span
 Axes MakeAxes(const LinePlot& plot) {
   Axes a;
   DataRange(plot, &a.x0, &a.x1, &a.y0, &a.y1);
-  if (a.x1 - a.x0 <= 0.0) a.x0 -= 0.5, a.x1 += 0.5;
-  if (a.y1 - a.y0 <= 0.0) a.y0 -= 1.0, a.y1 += 1.0;
+  if (Flat(a.x0, a.x1)) a.x0 -= 0.5, a.x1 += 0.5;
+  if (Flat(a.y0, a.y1)) a.y0 -= 1.0, a.y1 += 1.0;
   a.y_ticks = NiceTicks(a.y0, a.y1, 5);
   const double step = a.y_ticks.size() > 1 ? a.y_ticks[1] - a.y_ticks[0] : a.y1 - a.y0;
   a.y0 = std::min(a.y0, std::floor(a.y0 / step + 1e-9) * step);
@@ -196,7 +202,8 @@ std::string FormatFixed(double value, int decimals) {
 }
 
 std::vector<double> NiceTicks(double lo, double hi, int target) {
-  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || target < 1) return {lo};
+  // a flat span has no step the values can resolve (counting ticks up from lo would never reach hi)
+  if (Flat(lo, hi) || !std::isfinite(lo) || !std::isfinite(hi) || target < 1) return {lo};
   // step: 1, 2, 5 or 10 times a power of ten, the nearest (by ratio) to span / target
   const double raw = (hi - lo) / target;
   const double power = std::pow(10.0, std::floor(std::log10(raw)));

@@ -83,6 +83,12 @@ TEST_F(Ensemble, SameBytesAtOneAndTwoThreadsAndOrderedByIndex) {
   // box into a wall at 25..35 mph with e 0..0.2: delta-V between v and 1.2 v
   EXPECT_GT(stats["outputs"]["box.delta_v"]["min"].get<double>(), 25.0);
   EXPECT_LT(stats["outputs"]["box.delta_v"]["max"].get<double>(), 42.0);
+  // the box's 66 x 30 in front meets the wall whole at every speed: its nodes' peak contact area is
+  // the face's 1980 in^2, to the round-off of the summed triangle areas; the rigid wall's nodes carry none
+  for (const char* q : {"min", "max"})
+    EXPECT_NEAR(stats["outputs"]["box.peak_contact_area"][q].get<double>(), 66.0 * 30.0, 1e-9 * 1980.0) << q;
+  const nlohmann::json first = nlohmann::json::parse(Line(dir_ / "1" / "samples.jsonl", 0));
+  EXPECT_EQ(first["bodies"][1]["peak_contact_area"].get<double>(), 0.0);
   EXPECT_FALSE(fs::exists(dir_ / "1" / "samples.journal.jsonl"));
 }
 

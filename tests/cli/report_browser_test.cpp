@@ -92,7 +92,7 @@ class ReportInBrowser : public testing::CliFixture {
 
 // the figures of the demo (p406 into a fixed rigid barrier)
 const std::vector<std::string> kDemoPlots = {"plot-acceleration-p406", "plot-delta-v", "plot-force", "plot-moment",
-                                             "plot-energy", "plot-trajectories", "plot-crush-top-p406",
+                                             "plot-contact-area", "plot-energy", "plot-trajectories", "plot-crush-top-p406",
                                              "plot-crush-side-p406", "plot-crush-profile-p406"};
 
 TEST_F(ReportInBrowser, DemoReportParsesAsXhtmlWithoutConsoleMessages) {
@@ -129,7 +129,8 @@ TEST_F(ReportInBrowser, EveryPlotRendersWithSizeAndShapes) {
     std::map<std::string, std::array<int, 3>> plots;
     std::string id;
     for (std::array<int, 3> v; lines >> id >> v[0] >> v[1] >> v[2];) plots[id] = v;
-    std::vector<std::string> expected = {"plot-delta-v", "plot-force", "plot-moment", "plot-energy", "plot-trajectories"};
+    std::vector<std::string> expected = {"plot-delta-v", "plot-force", "plot-moment", "plot-contact-area", "plot-energy",
+                                         "plot-trajectories"};
     const std::vector<std::string> bodies = scenario == "barrier_frontal.json" ? std::vector<std::string>{"p406"}
                                                                                 : std::vector<std::string>{"p406", "car1_stock"};
     for (const std::string& b : bodies)

@@ -32,7 +32,7 @@ TEST(Report, SelfContainedWellFormedWithEveryPlot) {
   EXPECT_EQ(testing::XmlWellFormedError(html), "");
   // every figure of the moving, deformable box; none for the fixed, rigid wall
   for (const char* id : {"plot-acceleration-box", "plot-delta-v", "plot-force", "plot-moment", "plot-energy",
-                         "plot-trajectories", "plot-crush-top-box", "plot-crush-side-box", "plot-crush-profile-box",
+                         "plot-contact-area", "plot-trajectories", "plot-crush-top-box", "plot-crush-side-box", "plot-crush-profile-box",
                          "table-summary", "table-overall", "table-crush-box", "crush-scale-box"})
     EXPECT_TRUE(Has(html, std::string("id=\"") + id + "\"")) << id;
   EXPECT_FALSE(Has(html, "plot-acceleration-wall"));

@@ -24,6 +24,9 @@ TEST(NiceTicks, RoundStepsCoveringTheRange) {
   ASSERT_GE(small.size(), 3u);
   for (std::size_t k = 1; k < small.size(); ++k) EXPECT_NEAR(small[k] - small[k - 1], 0.02, 1e-12);
   EXPECT_EQ(NiceTicks(5, 5, 5).size(), 1u);  // empty range: no loop, one tick
+  // a range lost in its values' round-off (an ensemble output equal in every sample to the last
+  // digits: 1980 in^2 of contact area) has no step to count in: one tick, no endless loop
+  EXPECT_EQ(NiceTicks(1980.0, 1980.0 + 1e-12, 6).size(), 1u);
 }
 
 TEST(DecimateMinMax, KeepsPeaksEndsAndOrder) {
@@ -85,6 +88,11 @@ TEST(RenderLinePlot, EmptyAndNonFiniteDataStillDraw) {
   const std::string svg = RenderLinePlot(p);
   EXPECT_EQ(testing::XmlWellFormedError(svg), "");
   EXPECT_EQ(svg.find("nan,"), std::string::npos);
+  // values equal to their round-off draw on a unit span around them
+  LinePlot flat;
+  flat.id = "plot-flat";
+  flat.series.push_back({"flat", {1980.0, 1980.0 + 1e-12}, {1980.0, 1980.0 + 1e-12}});
+  EXPECT_EQ(testing::XmlWellFormedError(RenderLinePlot(flat)), "");
 }
 
 TEST(PlanView, OneScaleForBothAxesAndMirror) {

@@ -59,8 +59,8 @@ inline constexpr const char* kTimedOut = "timed_out";
 inline constexpr const char* kFailedInput = "failed_input";
 
 /// Per-body outputs of a complete sample (statistics, thresholds): "BODY.QUANTITY".
-inline constexpr std::array<const char*, 6> kOutputQuantities = {"delta_v", "pdof_deg", "peak_acceleration_g",
-                                                                 "max_crush", "crush_energy", "final_yaw_rate_deg_s"};
+inline constexpr std::array<const char*, 7> kOutputQuantities = {
+    "delta_v", "pdof_deg", "peak_acceleration_g", "max_crush", "crush_energy", "final_yaw_rate_deg_s", "peak_contact_area"};
 /// What evidence may be measured on besides the outputs: the crush profile and the rest position.
 inline constexpr std::array<const char*, 9> kMeasuredQuantities = {"c1", "c2", "c3", "c4", "c5", "c6",
                                                                    "rest_x", "rest_y", "rest_heading"};
