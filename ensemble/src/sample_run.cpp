@@ -17,20 +17,9 @@ namespace {
 
 using Json = nlohmann::json;
 
-// the quantities of each body the statistics track
-void AddOutputs(const BodySummary& b, const OutputUnits& u, std::map<std::string, double>* out) {
-  (*out)[b.name + ".delta_v"] = b.delta_v * u.speed;
-  (*out)[b.name + ".pdof_deg"] = b.pdof_deg;
-  (*out)[b.name + ".peak_acceleration_g"] = b.peak_accel / units::kStandardGravity;
-  (*out)[b.name + ".max_crush"] = b.max_crush * u.length;
-  (*out)[b.name + ".crush_energy"] = b.crush_energy * u.energy;
-  (*out)[b.name + ".final_yaw_rate_deg_s"] = b.final_yaw_rate * kRadToDeg;  // the spin the impact leaves
-  (*out)[b.name + ".peak_contact_area"] = b.peak_contact_area * u.length * u.length;  // what its nodes met
-}
-
 Json Vector(const Vec3& v, double scale) { return {v.x() * scale, v.y() * scale, v.z() * scale}; }
 
-// the record's body entry (scenario units)
+// the record's body entry (scenario units); the statistics track its kOutputQuantities
 Json BodyJson(const BodySummary& b, const RigidState& final_state, const OutputUnits& u) {
   Json c = Json::array();
   for (double x : b.crush_profile.crush) c.push_back(x * u.length);
@@ -52,24 +41,20 @@ Json RecordHead(const Spec& spec, int index, const std::vector<double>& values) 
 }
 
 // a run that ended: its status, warnings, energy balance and bodies; its outputs when complete
-void RecordRun(const Simulation& sim, const Scenario& scenario, SampleRecord* r, Json* record) {
+void RecordRun(const Simulation& sim, const Scenario& scenario, Json* record) {
   const Summary s = Summarize(sim);
   const OutputUnits u = UnitsOf(scenario.units);
-  r->status = RunStatusName(s.status);
   Json warnings = Json::array();
   for (const RunWarning& w : s.warnings) warnings.push_back(w.code);
-  (*record)["status"] = r->status;
+  (*record)["status"] = RunStatusName(s.status);
   (*record)["warnings"] = warnings;
   (*record)["energy_balance_error"] = std::isfinite(s.energy_balance_error) ? s.energy_balance_error : 0.0;
   for (std::size_t i = 0; i < s.bodies.size(); ++i)
     (*record)["bodies"].push_back(BodyJson(s.bodies[i], sim.engine().state(static_cast<int>(i)).rigid, u));
-  if (s.status == RunStatus::kComplete)
-    for (const BodySummary& b : s.bodies) AddOutputs(b, u, &r->outputs);
 }
 
 // a sample that has no results: its status and why
-void RecordNotRun(const std::string& status, const std::string& why, SampleRecord* r, Json* record) {
-  r->status = status;
+void RecordNotRun(const std::string& status, const std::string& why, Json* record) {
   (*record)["status"] = status;
   (*record)["message"] = why;
 }
@@ -125,8 +110,6 @@ Scenario SampleScenario(const Spec& spec, const std::vector<double>& values) {
 SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes,
                        double time_limit) {
   const auto start = std::chrono::steady_clock::now();
-  SampleRecord r;
-  r.index = index;
   Json record = RecordHead(spec, index, values);
   try {
     const Scenario scenario = SampleScenario(spec, values);
@@ -140,16 +123,18 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <= time_limit;
     };
     if (sim.Run(within_limit)) {
-      RecordRun(sim, scenario, &r, &record);
+      RecordRun(sim, scenario, &record);
     } else {
       RecordNotRun(kTimedOut, "ran over the sample time limit of " + Json(time_limit).dump() + " s (wall clock) at " +
-                                  Json(sim.time()).dump() + " s simulated", &r, &record);
+                                  Json(sim.time()).dump() + " s simulated", &record);
     }
   } catch (const std::exception& e) {
     // a refused sample is a record with its reason, never the end of the ensemble
-    RecordNotRun(kFailedInput, e.what(), &r, &record);
+    RecordNotRun(kFailedInput, e.what(), &record);
   }
-  r.line = record.dump();
+  // status, outputs and observables read from the line, as a resumed sample's are
+  SampleRecord r;
+  ParseRecord(spec, record.dump(), &r);
   return r;
 }
 
