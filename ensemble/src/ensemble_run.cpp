@@ -145,13 +145,17 @@ class Collector {
     return todo;
   }
 
-  // a finished sample: journaled, then kept as read back (the same numbers after a resume)
+  // a finished sample, kept as read back from its line (the same numbers after a resume): one a
+  // worker rank sent, or one run here (RunSample reads its own line back)
   void Add(const std::string& line) {
-    journal_->Append(line);
     SampleRecord stored;
     ParseRecord(spec_, line, &stored);
+    Add(stored);
+  }
+  void Add(const SampleRecord& record) {
+    journal_->Append(record.line);
     std::lock_guard<std::mutex> lock(mutex_);
-    records_.emplace(stored.index, stored);
+    records_.emplace(record.index, record);
     if (options_.progress) options_.progress(counts_.resumed + ++added_, counts_.total);
   }
 
@@ -253,7 +257,7 @@ RunCounts RunEnsemble(const Spec& spec, const RunOptions& options) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
         if (options.stop && options.stop()) return;
-        collector.Add(RunSample(spec, todo[k], design.Values(todo[k]), &meshes, options.sample_time_limit).line);
+        collector.Add(RunSample(spec, todo[k], design.Values(todo[k]), &meshes, options.sample_time_limit));
       }
     });
     if (options.stop && options.stop()) break;
