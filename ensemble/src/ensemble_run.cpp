@@ -147,11 +147,7 @@ class Collector {
 
   // a finished sample, kept as read back from its line (the same numbers after a resume): one a
   // worker rank sent, or one run here (RunSample reads its own line back)
-  void Add(const std::string& line) {
-    SampleRecord stored;
-    ParseRecord(spec_, line, &stored);
-    Add(stored);
-  }
+  void Add(const std::string& line) { Add(ParseOwnRecord(spec_, line)); }
   void Add(const SampleRecord& record) {
     journal_->Append(record.line);
     std::lock_guard<std::mutex> lock(mutex_);

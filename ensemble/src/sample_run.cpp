@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
@@ -133,9 +134,7 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
     RecordNotRun(kFailedInput, e.what(), &record);
   }
   // status, outputs and observables read from the line, as a resumed sample's are
-  SampleRecord r;
-  ParseRecord(spec, record.dump(), &r);
-  return r;
+  return ParseOwnRecord(spec, record.dump());
 }
 
 bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
@@ -169,6 +168,13 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
     }
   }
   return true;
+}
+
+SampleRecord ParseOwnRecord(const Spec& spec, const std::string& line) {
+  SampleRecord r;
+  if (!ParseRecord(spec, line, &r))
+    throw std::logic_error("ensemble: a record this engine wrote does not read back: " + line.substr(0, 200));
+  return r;
 }
 
 }  // namespace dymesh::ensemble

@@ -74,6 +74,10 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
 /// Reads a record line back (status, outputs); false when it is not a valid record of `spec`.
 bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out);
 
+/// Reads back a record line this engine just wrote for `spec` (here or on a worker rank); one that
+/// does not parse is a bug, not bad input: std::logic_error naming the line's start.
+SampleRecord ParseOwnRecord(const Spec& spec, const std::string& line);
+
 /// The engine version written into records.
 inline constexpr const char* kEngineVersion = "0.1.0";
 
