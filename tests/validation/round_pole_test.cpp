@@ -1,0 +1,108 @@
+// A car into a round rigid pole struck off its centreline: the pole stops it; it does not pass
+// through. A node pushed only along the pole's normal slid round the pole with the car (the p406 at
+// 20 mph kept all but 0.35 mph of its speed with the pole 5 in off its axis); spec §7's Coulomb
+// friction in the node's motion (StickingCorrection) holds it where it touched.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <utility>
+
+#include "dymesh/accel/embree_locator.h"
+#include "dymesh/analysis/summary.h"
+#include "dymesh/core/simulation.h"
+#include "dymesh/core/units.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/scenario_json.h"
+#include "test_scenarios.h"
+
+namespace dymesh {
+namespace {
+
+namespace u = units;
+
+// the shipped demo: the p406 at 20 mph into a 12 in round pole, its axis on the car's centreline
+Scenario RoundPole(double offset_in) {
+  Scenario s = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/pole_cylinder.json");
+  s.bodies[1].initial.position.y() += offset_in * u::kInch;
+  return s;
+}
+
+struct PoleRun {
+  double delta_v = 0.0;  // [m/s] the car's
+  double balance = 0.0;
+  double yaw_radius2 = 0.0;  // [m^2] the car's yaw inertia over its mass
+  double restitution = 0.0;
+};
+
+PoleRun RunPole(Scenario s) {
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
+  sim.Run();
+  const int car = sim.engine().model(0).rigid ? 1 : 0;
+  const BodyModel& m = sim.engine().model(car);
+  const Summary sum = Summarize(sim);
+  return {sum.bodies[car].delta_v, sum.energy_balance_error, m.inertia(2, 2) / m.mass, m.restitution};
+}
+
+// Known answer (impulse-momentum, planar): the pole stops the contact point (e = 0, friction holding
+// it) at lever arm r from the CG, r reaching the pole's axis offset d sideways. The CG's delta-V along
+// the approach is then V (1 - d^2 / (k^2 + |r|^2)), k^2 = I_zz / m, least when |r| is least (= d):
+// the lower bar V (1 - d^2 / (k^2 + d^2)), 0.99 V at 5 in and 0.90 V at 18 in for the p406 (k = 52.6
+// in). A car that goes through keeps most of its speed (0.35 mph of 20 before the fix). The upper bar
+// is the rebound's: a node gives back at most its peak force over e delta_max (spec §6), and the
+// loading law A + B delta has F_peak delta_max <= 2 x its work, so the car leaves at most sqrt(2 e) V.
+// The energy balance within 2 % (the bar)
+void ExpectPoleStopsCar(const std::string& label, double offset_in, const std::function<void(Scenario*)>& vary) {
+  Scenario s = RoundPole(offset_in);
+  vary(&s);
+  const double speed = 20.0 * u::kMph, d = offset_in * u::kInch;
+  const PoleRun r = RunPole(s);
+  const double lower = speed * (1.0 - d * d / (r.yaw_radius2 + d * d));
+  const double upper = speed * (1.0 + std::sqrt(2.0 * r.restitution));
+  EXPECT_GT(r.delta_v, lower) << label << ", pole " << offset_in << " in off the centreline";
+  EXPECT_LT(r.delta_v, upper) << label << ", pole " << offset_in << " in off the centreline";
+  EXPECT_NEAR(r.balance, 0.0, 0.02) << label;
+  std::printf("[measured] round pole %.0f in off, %s: delta-V %.2f mph (bars %.2f-%.2f), balance %.4f %%\n", offset_in,
+              label.c_str(), r.delta_v / u::kMph, lower / u::kMph, upper / u::kMph, 100 * r.balance);
+}
+
+TEST(RoundPole, StopsTheCarAtEveryOffset) {
+  for (double offset : {0.0, 5.0, 10.0, 14.0, 18.0}) ExpectPoleStopsCar("default", offset, [](Scenario*) {});
+}
+
+TEST(RoundPole, StopsTheCarForEverySearchStopRulePassCountStepMeshOrderAndFrame) {
+  const std::vector<std::pair<std::string, std::function<void(Scenario*)>>> variants = {
+      {"dt/2", [](Scenario* s) { s->time_step /= 2.0; }},
+      {"local average normal", [](Scenario* s) { s->contact.search_direction = SearchDirection::kLocalAverageNormal; }},
+      {"polygon normal", [](Scenario* s) { s->contact.search_direction = SearchDirection::kPolyNormal; }},
+      {"stop after one", [](Scenario* s) { s->contact.stop_rule = StopRule::kAfterOne; }},
+      {"3 passes", [](Scenario* s) { s->contact.passes_per_step = 3; }},
+      {"car mesh 1:4", [](Scenario* s) { s->bodies[0].mesh.subdivisions += 1; }},
+      {"pole first", [](Scenario* s) {
+         std::swap(s->bodies[0], s->bodies[1]);
+         s->bodies[1].place_at_contact->with = 0;  // the pole, now listed first
+       }},
+      {"frame +30 deg", [](Scenario* s) {
+         for (BodySpec& b : s->bodies) testing::TurnAboutVertical(30.0 * u::kDegree, &b);
+       }},
+  };
+  for (const auto& [label, vary] : variants) {
+    for (double offset : {5.0, 14.0}) ExpectPoleStopsCar(label, offset, vary);
+  }
+}
+
+// Known limit (README): without friction nothing holds a node on the round face, and the car slides
+// round the pole (0.20 mph of 20 at 5 in off). Held over the bar, to be dropped when it is met
+TEST(RoundPole, FrictionlessPoleStillLetsTheCarThrough) {
+  Scenario s = RoundPole(5.0);
+  for (BodySpec& b : s.bodies) b.friction = 0.0;
+  const PoleRun r = RunPole(s);
+  std::printf("[measured] round pole 5 in off, frictionless: delta-V %.2f mph\n", r.delta_v / u::kMph);
+  EXPECT_LT(r.delta_v, 0.5 * 20.0 * u::kMph) << "the frictionless pole now stops the car: drop the exception";
+}
+
+}  // namespace
+}  // namespace dymesh
