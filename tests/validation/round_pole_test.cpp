@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
