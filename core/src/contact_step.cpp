@@ -396,7 +396,7 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   // under the band (or stopped it: static friction) it also holds the slower slip there, until it
   // no longer can
   const Vec3 v_rel = f.r_master * hit.rel_velocity;
-  const Vec3 v_slide = v_rel - v_rel.dot(normal_earth) * normal_earth;
+  const Vec3 v_slide = AlongSurface(v_rel, normal_earth);
   const double slide = v_slide.norm();
   if (f.mu > 0.0 && (slide > options_.friction_null_band || (f.held && slide > 0.0))) {
     out->sums.friction.Add(-(f.mu * node_force / slide) * v_slide, arm_slave, arm_master);
@@ -738,8 +738,9 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     // rigid face takes the whole push and never gives way, so the node alone holds the stick. Between
     // two deformable bodies the nodes keep the normal push: sticking there too left 23 % more nodes
     // unfound on the rear-end and moved the crush split from +21 to +40 % over equal pressure
-    const Vec3 slide_step = (hit->rel_velocity - hit->rel_velocity.dot(hit->normal) * hit->normal) * dt;
-    const Vec3 stick = f.master_model->rigid ? StickingCorrection(slide_step, push, depth, f.mu) : Vec3::Zero();
+    Vec3 stick = Vec3::Zero();
+    if (f.master_model->rigid)
+      stick = StickingCorrection(AlongSurface(hit->rel_velocity, hit->normal) * dt, push, depth, f.mu);
     delta += push * normal_slave + f.r_slave_to_master.transpose() * stick;
     touching = true;
   } else if ((hit ? receding < 0.0 : closing_unfound) && !f.master_model->rigid) {

@@ -12,6 +12,9 @@ using Mat3 = Eigen::Matrix3d;
 /// Unnormalised triangle normal (a-b-c counter-clockwise seen from outside); its length is twice the area.
 inline Vec3 TriangleCross(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
 
+/// The part of `v` along a surface of unit normal `n` (v less its normal component).
+inline Vec3 AlongSurface(const Vec3& v, const Vec3& n) { return v - v.dot(n) * n; }
+
 /// InsidePolygonTest_CrossProd (spec §2): q lies inside triangle abc (normal n) when it is on the
 /// inner side of all three edges; points on an edge or vertex count as inside (relative tolerance
 /// `edge_tolerance` of the edge length squared).
