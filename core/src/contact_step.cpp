@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "contact_pass_frame.h"
 #include "dymesh/core/contact_stick.h"
 #include "dymesh/core/crush_sharing.h"
 #include "dymesh/core/parallel.h"
@@ -24,20 +25,6 @@ void RequireFiniteState(const RigidState& r, int body) {
 constexpr double kMinFacing = 1e-9;
 // [m/s] relative speed below which the velocity search direction falls back to the local normal
 constexpr double kStillSpeed = 1e-9;
-
-// the master triangle's stiffness at a contact: its corners' average (spec §5 note, SlaveNodeForce)
-Stiffness CornerAverage(const BodyModel& model, const std::array<int, 3>& triangle) {
-  Stiffness k;
-  for (int corner : triangle) {
-    const Stiffness& c = model.VertexStiffness(corner);
-    k.A += c.A / 3.0;
-    k.B += c.B / 3.0;
-    k.C += c.C / 3.0;
-    k.D += c.D / 3.0;
-    k.sat_crush += c.sat_crush / 3.0;
-  }
-  return k;
-}
 
 // a host's body index must name a body
 void RequireBodyIndex(int i, int count, const char* call) {
@@ -70,43 +57,9 @@ void ContactDiagnostics::Add(const ContactDiagnostics& o) {
   held_unfound += o.held_unfound;
   reduced += o.reduced;
   non_finite += o.non_finite;
+  faces_pushed += o.faces_pushed;
   pairs_in_contact += o.pairs_in_contact;
 }
-
-// slave-to-master transform and body kinematics of one pass (master frame = master body frame)
-struct ContactEngine::PassFrame {
-  const BodyModel* master_model;
-  const BodyModel* slave_model;
-  const BodyState* master;
-  BodyState* slave;
-  const Locator* master_locator;
-  Mat3 r_master, r_slave;   // body -> earth
-  Mat3 r_slave_to_master;   // slave body -> master body
-  Vec3 t_slave_to_master;   // slave CG in the master frame
-  std::vector<Vec3>* pending;  // [m] the slave's new Delta of the nodes that moved (n_vertices)
-  double mu;                // contact friction coefficient of the pair
-  bool held;                // friction left the pair's slide under the null band in the last step
-  Vec3 pushed;              // unit direction of the normal impulse on the slave so far (master frame), or zero
-
-  Vec3 ToMaster(const Vec3& p_slave) const { return r_slave_to_master * p_slave + t_slave_to_master; }
-
-  // velocity of the slave node relative to the master material point it sits in, master frame
-  Vec3 RelativeVelocity(const Vec3& p_slave, const Vec3& p_master) const {
-    const Vec3 v_slave = slave->rigid.velocity + r_slave * slave->rigid.omega.cross(p_slave);
-    const Vec3 v_master = master->rigid.velocity + r_master * master->rigid.omega.cross(p_master);
-    return r_master.transpose() * (v_slave - v_master);
-  }
-};
-
-// a slave node matched to a master triangle (master frame): the search direction found the
-// triangle; the penetration, the pushback and the contact force are along its outward normal
-struct ContactEngine::Located {
-  int triangle = -1;
-  double ray_depth = 0.0;    // [m] distance to the surface along the search ray (selects the triangle)
-  double depth = 0.0;        // [m] penetration along the triangle's normal (> 0 inside the master)
-  Vec3 normal{0, 0, 0};      // master's outward normal of the triangle, unit, master frame
-  Vec3 rel_velocity{0, 0, 0};  // [m/s] slave node relative to master, master frame
-};
 
 ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> models, std::vector<RigidState> initial,
                              ContactOptions options, const LocatorFactory& make_locator)
@@ -214,6 +167,7 @@ StepResult ContactEngine::Step(double dt) {
       auto& engaged = engaged_[ab];
       const int passes = options_.passes_per_step;
       std::vector<PassSums> sums(passes);
+      PassSums rigid_nodes;  // a rigid body's nodes pushing the faces they crossed
       auto run = [&](int pass, int master, bool stage) {
         const int slave = master == a ? b : a;
         sums[pass] = RunPass(master, slave, stage, held != 0, &engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
@@ -222,6 +176,8 @@ StepResult ContactEngine::Step(double dt) {
         // a rigid body is always the master and takes none of the crush
         const int master = models_[a]->rigid ? a : b;
         for (int pass = 0; pass < passes; ++pass) run(pass, master, false);
+        const int slave = master == a ? b : a;
+        rigid_nodes = PushFacesOffRigidNodes(master, slave, engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
       } else {
         // spec §1 swapping, simultaneously: each pair of passes lets both bodies, as slaves, find the
         // overlap against the other's surface as it was before the pair, each taking its
@@ -237,7 +193,7 @@ StepResult ContactEngine::Step(double dt) {
         // an odd last pass: one side, alternating between steps (its master's share waits for the next)
         if (pass < passes) run(pass, step_index_ % 2 == 0 ? b : a, false);
       }
-      result.pairs.push_back(CombinePasses(a, b, sums));
+      result.pairs.push_back(CombinePasses(a, b, sums, rigid_nodes));
       // the pair's normal impulse, each side in the other's frame
       const Vec3 on_a = result.pairs.back().normal_force[0] * dt;
       pushed_[ab] += states_[b].rigid.Rotation().transpose() * on_a;
@@ -474,7 +430,8 @@ void ContactEngine::CommitPending(int body) {
   moved_[body].clear();
 }
 
-PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>& sums) const {
+PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>& sums,
+                                       const PassSums& rigid_nodes) const {
   PairLoads out;
   out.body[0] = a;
   out.body[1] = b;
@@ -499,6 +456,14 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
     out.friction_force[km] -= w * p.friction.force_slave;
     out.friction_moment[km] += w * p.friction.moment_master;
   }
+  // a rigid body's nodes loaded faces no pass's nodes held: their loads add whole; the node-law work
+  // is on the deformable side (the master of those pushes)
+  const int ks = rigid_nodes.slave == a ? 0 : 1, km = 1 - ks;
+  out.law_energy[km] += rigid_nodes.law_energy;
+  out.normal_force[ks] += rigid_nodes.normal.force_slave;
+  out.normal_moment[ks] += rigid_nodes.normal.moment_slave;
+  out.normal_force[km] -= rigid_nodes.normal.force_slave;
+  out.normal_moment[km] += rigid_nodes.normal.moment_master;
   // each side's own view of the contact area: what its nodes met, per pass
   for (int k = 0; k < 2; ++k)
     if (slave_passes[k] > 0) out.contact_area[k] /= slave_passes[k];

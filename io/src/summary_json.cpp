@@ -92,7 +92,7 @@ nlohmann::json SummaryObject(const Summary& s, UnitSystem system) {
   j["diagnostics"] = {{"candidates", d.candidates}, {"located", d.located}, {"touching", d.touching},
                       {"too_far_limited", d.too_far_limited}, {"max_crush_limited", d.max_crush_limited},
                       {"growth_limited", d.growth_limited}, {"held_unfound", d.held_unfound},
-                      {"pushback_reduced", d.reduced},
+                      {"pushback_reduced", d.reduced}, {"faces_pushed", d.faces_pushed},
                       {"non_finite", d.non_finite}, {"pair_steps_in_contact", d.pairs_in_contact}};
   ReplaceNonFinite(&j);
   return j;

@@ -166,8 +166,9 @@ std::string OverallTable(const Context& c) {
            one(FormatFixed(s.closing_speed * u.speed, 2) + " / " + FormatFixed(s.separation_speed * u.speed, 2)));
   t += Row("effective restitution", one(FormatFixed(s.closing_speed > 0 ? s.separation_speed / s.closing_speed : 0.0, 3)));
   const ContactDiagnostics& d = s.diagnostics;
-  t += Row("diagnostics: candidates / located / touching",
-           one(std::to_string(d.candidates) + " / " + std::to_string(d.located) + " / " + std::to_string(d.touching)));
+  t += Row("diagnostics: candidates / located / touching / faces pushed by rigid nodes",
+           one(std::to_string(d.candidates) + " / " + std::to_string(d.located) + " / " + std::to_string(d.touching) +
+               " / " + std::to_string(d.faces_pushed)));
   t += Row("limits: too far / max crush / growth / held unfound / pushback reduced / NaN guard",
            one(std::to_string(d.too_far_limited) + " / " + std::to_string(d.max_crush_limited) + " / " +
                std::to_string(d.growth_limited) + " / " + std::to_string(d.held_unfound) + " / " + std::to_string(d.reduced) +

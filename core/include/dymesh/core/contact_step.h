@@ -30,6 +30,7 @@ struct ContactDiagnostics {
   long long held_unfound = 0;      ///< crushed nodes held (no force, no spring) while a deformable master closed on them
   long long reduced = 0;           ///< restorations reduced by PushbackReduction (version 4)
   long long non_finite = 0;        ///< node updates skipped by the NaN guard
+  long long faces_pushed = 0;      ///< rigid nodes that pushed a deformable face they crossed
   int pairs_in_contact = 0;        ///< pairs whose bounds overlapped
 
   void Add(const ContactDiagnostics& o);
@@ -137,7 +138,8 @@ class ContactEngine {
   // spec §7 Coulomb bounds on the pair's friction; true when it leaves the slide under the null band
   // (held in the next step)
   bool LimitFriction(double dt, PairLoads* pair) const;
-  PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums) const;
+  // the passes' estimates of the interface load, plus the rigid nodes' pushes whole
+  PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums, const PassSums& rigid_nodes) const;
   Vec3 SearchLine(const PassFrame& f, int v, const Vec3& v_rel, const Vec3& inward) const;
   // `along`: a search direction (master frame) instead of the method's, or null
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
@@ -155,6 +157,12 @@ class ContactEngine {
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding);
   void CommitPending(int body);
+  // spec §1 swapping against a rigid body: its nodes, as slaves, push the deformable body's faces they
+  // crossed between the nodes that `engaged` holds on it (a pole meeting a coarse panel between its
+  // nodes); the deformable body's face corners take the crush. Returns the loads with the rigid body as
+  // the slave and the node-law work on the deformable body
+  PassSums PushFacesOffRigidNodes(int rigid, int deformable, const EngagedNodes& engaged, double dt,
+                                  ContactDiagnostics* diag);
   bool BoundsOverlap(int a, int b) const;
   void InitBounds(int body);
   void GrowBounds(int body, const std::vector<int>& moved);

@@ -1,0 +1,184 @@
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "contact_pass_frame.h"
+#include "dymesh/core/geometry.h"
+#include "dymesh/core/node_force.h"
+#include "dymesh/core/parallel.h"
+
+namespace dymesh {
+namespace {
+
+// barycentric weights of p's projection on triangle abc, clamped to the triangle
+std::array<double, 3> ClampedBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double nn = n.squaredNorm();
+  std::array<double, 3> w = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  if (!(nn > 0.0)) return w;
+  w = {(c - b).cross(p - b).dot(n) / nn, (a - c).cross(p - c).dot(n) / nn, (b - a).cross(p - a).dot(n) / nn};
+  double sum = 0.0;
+  for (double& x : w) sum += (x = std::max(x, 0.0));
+  if (!(sum > 0.0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  for (double& x : w) x /= sum;
+  return w;
+}
+
+// a rigid node that crossed a deformable face in the last step (deformable frame)
+struct Crossing {
+  int node = 0;          // rigid vertex
+  int triangle = 0;      // deformable face it lies behind
+  double depth = 0.0;    // [m] behind the face, along its normal
+  Vec3 point{0, 0, 0};   // the rigid node
+  Vec3 normal{0, 0, 0};  // the face's outward normal, unit
+  std::array<double, 3> weight{};  // the node's place on the face; zero at corners that stay put
+};
+
+// pushes of a face's three corners along its normal [m] that move it at the crossing nodes
+// [first, last) by their depths, least squares (Tikhonov-regularised: with fewer than three nodes,
+// or nodes in a line, the least push); none pulls a corner out toward the rigid body, and none goes
+// beyond the deepest node (moving the whole face by that clears every node: a plane fitted to nodes
+// bunched at one edge must not tip its far corner through the body, 250 in on the p406's pole runs)
+std::array<double, 3> FacePush(const std::vector<Crossing>& crossings, std::size_t first, std::size_t last) {
+  Mat3 normal = Mat3::Zero();
+  Vec3 right = Vec3::Zero();
+  double deepest = 0.0;
+  for (std::size_t i = first; i < last; ++i) {
+    const Vec3 w(crossings[i].weight[0], crossings[i].weight[1], crossings[i].weight[2]);
+    normal += w * w.transpose();
+    right += crossings[i].depth * w;
+    deepest = std::max(deepest, crossings[i].depth);
+  }
+  normal += 1e-6 * (normal.trace() / 3.0) * Mat3::Identity();
+  const Vec3 push = normal.ldlt().solve(right).cwiseMax(0.0).cwiseMin(deepest);
+  return {push[0], push[1], push[2]};
+}
+
+}  // namespace
+
+ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int deformable, const EngagedNodes& engaged,
+                                                             double dt, ContactDiagnostics* diag) {
+  PassSums sums;
+  sums.master = deformable;
+  sums.slave = rigid;
+  BodyState& s = states_[deformable];
+  const BodyModel& m = *models_[deformable];
+  PassFrame f{&m, models_[rigid].get(), &s, &states_[rigid], locators_[deformable].get(),
+              s.rigid.Rotation(), states_[rigid].rigid.Rotation(), Mat3::Identity(), Vec3::Zero(), nullptr,
+              0.0, false, pushed_[static_cast<size_t>(rigid) * body_count() + deformable].normalized()};
+  f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
+  f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - s.rigid.position);
+  const std::vector<int> candidates = CullCandidates(f, deformable, rigid, EngagedNodes{});
+  if (candidates.empty()) return sums;
+  locators_[deformable]->Prepare(rigid, step_index_, candidates,
+                                 [&](int v) { return f.ToMaster(f.slave->vertices[v]); });
+
+  // spec §2 Location with the rigid body's nodes as slaves: a node that crossed a face while the bodies
+  // close (no deeper than a step's motion plus TOOFAR_MARGIN: a face found deeper was passed before,
+  // an inner layer of a display mesh) and whose corners the deformable body's own nodes do not hold
+  // on the rigid surface; those corners are the ones it pushes
+  auto free_corner = [&](int v) { return !std::binary_search(engaged.touching.begin(), engaged.touching.end(), v); };
+  chunks_.resize(std::max(chunks_.size(), ChunkCount(candidates.size())));
+  std::vector<std::vector<Crossing>> found(ChunkCount(candidates.size()));
+  ForEachChunk(candidates.size(), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      Located hit;
+      if (!LocateNode(f, candidates[i], false, nullptr, &chunks_[chunk].scratch, &hit)) continue;
+      if (hit.depth <= options_.contact_tolerance || hit.rel_velocity.dot(hit.normal) >= 0.0) continue;
+      if (hit.depth > hit.rel_velocity.norm() * dt + options_.toofar_margin) continue;
+      const auto& tri = m.mesh.triangles[hit.triangle];
+      Crossing c{candidates[i], hit.triangle, hit.depth, f.ToMaster(f.slave->vertices[candidates[i]]), hit.normal};
+      c.weight = ClampedBarycentric(c.point, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
+      if (free_corner(tri[0]) && free_corner(tri[1]) && free_corner(tri[2])) found[chunk].push_back(c);
+    }
+  });
+  std::vector<Crossing> crossings;
+  for (const auto& list : found) crossings.insert(crossings.end(), list.begin(), list.end());
+  if (crossings.empty()) return sums;
+
+  // each face's corner pushes, along its normal, that move it at its crossing nodes by their depths
+  // in the least-squares sense (a face parallel to the rigid surface moves parallel, one node alone
+  // gets the least push that clears it); a corner shared by faces takes the largest; the rigid side
+  // takes none (determinism: faces in index order, nodes in index order within a face)
+  std::sort(crossings.begin(), crossings.end(), [](const Crossing& x, const Crossing& y) {
+    return x.triangle != y.triangle ? x.triangle < y.triangle : x.node < y.node;
+  });
+  std::vector<Vec3>& pending = pending_delta_[deformable];
+  std::vector<int> corners;
+  for (std::size_t first = 0; first < crossings.size();) {
+    std::size_t last = first;
+    while (last < crossings.size() && crossings[last].triangle == crossings[first].triangle) ++last;
+    const std::array<double, 3> push = FacePush(crossings, first, last);
+    const auto& tri = m.mesh.triangles[crossings[first].triangle];
+    for (int k = 0; k < 3; ++k) {
+      if (!(push[k] > 0.0)) continue;
+      const Vec3 along = -push[k] * crossings[first].normal;
+      const int v = tri[k];
+      if (std::find(corners.begin(), corners.end(), v) == corners.end()) {
+        corners.push_back(v);
+        pending[v] = along;
+      } else if (along.squaredNorm() > pending[v].squaredNorm()) {
+        pending[v] = along;
+      }
+    }
+    first = last;
+  }
+  // the corners take their pushes as crush on the loading branch (spec §6), bottoming at MaxCrush
+  std::sort(corners.begin(), corners.end());
+  std::vector<double> before(corners.size()), peak(corners.size());
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const int v = corners[i];
+    const Stiffness& k = m.VertexStiffness(v);
+    before[i] = s.delta[v].norm();
+    peak[i] = s.delta_max[v];
+    Vec3 delta = s.delta[v] + pending[v];
+    const double cap = std::max(k.max_crush, before[i]);
+    if (k.max_crush > 0.0 && delta.norm() > cap) {
+      delta *= cap / delta.norm();
+      ++diag->max_crush_limited;
+    }
+    pending[v] = delta;
+    s.delta_max[v] = std::max(peak[i], delta.norm());
+    s.unload[v] = NextUnloadState(s.unload[v], true, delta.norm(), s.delta_max[v], m.restitution, options_);
+  }
+  auto crush_at = [&](const Crossing& c, bool after) {
+    // the face's crush at the node: its corners' crush by the node's place (pushed corners as pushed)
+    const auto& tri = m.mesh.triangles[c.triangle];
+    const auto w = ClampedBarycentric(c.point, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
+    double crush = 0.0, top = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const auto at = std::lower_bound(corners.begin(), corners.end(), tri[k]);
+      const bool pushed = at != corners.end() && *at == tri[k];
+      const std::size_t i = static_cast<std::size_t>(at - corners.begin());
+      crush += w[k] * (after && pushed ? pending[tri[k]].norm() : pushed ? before[i] : s.delta[tri[k]].norm());
+      top += w[k] * (pushed ? peak[i] : s.delta_max[tri[k]]);
+    }
+    return std::array<double, 2>{crush, top};
+  };
+
+  // each node presses its own area with the face's law (its corners' stiffness and crush, as a
+  // deformable master's face under a slave node, spec §5 note): the law's work over the face's crush
+  // at the node, and the mean pressure over that crush as the force, so force times the step's
+  // approach is the work booked. Both bodies are loaded at the rigid node (momentum conserved)
+  for (const Crossing& c : crossings) {
+    const Stiffness k = CornerAverage(m, m.mesh.triangles[c.triangle]);
+    const auto [from, top] = crush_at(c, false);
+    const double to = crush_at(c, true)[0];
+    if (!(to > from)) continue;
+    const Vec3 normal_rigid = f.r_slave_to_master.transpose() * c.normal;
+    const double area = ContactNodeArea(*f.slave_model, *f.slave, c.node, normal_rigid, c.depth);
+    const double work = area * NodeLawWork(k, from, to, top, m.restitution, options_);
+    if (!std::isfinite(work) || !(work > 0.0)) continue;
+    const Vec3 on_rigid = f.r_master * c.normal * (work / (to - from));
+    sums.normal.Add(on_rigid, f.r_slave * f.slave->vertices[c.node], f.r_master * c.point);
+    sums.law_energy += work;
+    ++diag->faces_pushed;
+  }
+  moved_[deformable] = std::move(corners);
+  CommitPending(deformable);
+  s.law_energy += sums.law_energy;
+  return sums;
+}
+
+}  // namespace dymesh
