@@ -32,7 +32,7 @@ struct Crossing {
   double depth = 0.0;    // [m] behind the face, along its normal
   Vec3 point{0, 0, 0};   // the rigid node
   Vec3 normal{0, 0, 0};  // the face's outward normal, unit
-  std::array<double, 3> weight{};  // the node's place on the face; zero at corners that stay put
+  std::array<double, 3> weight{};  // the node's place on the face (barycentric, clamped to it)
 };
 
 // pushes of a face's three corners along its normal [m] that move it at the crossing nodes
@@ -76,8 +76,10 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
 
   // spec §2 Location with the rigid body's nodes as slaves: a node that crossed a face while the bodies
   // close (no deeper than a step's motion plus TOOFAR_MARGIN: a face found deeper was passed before,
-  // an inner layer of a display mesh) and whose corners the deformable body's own nodes do not hold
-  // on the rigid surface; those corners are the ones it pushes
+  // an inner layer of a display mesh), on a face none of whose corners the deformable body's own
+  // nodes hold on the rigid surface (there its own contact carries the load: pushing the free corners
+  // of a face with a held corner, to clear a node near the held one, crushed the p406 786 in on the
+  // round pole)
   auto free_corner = [&](int v) { return !std::binary_search(engaged.touching.begin(), engaged.touching.end(), v); };
   chunks_.resize(std::max(chunks_.size(), ChunkCount(candidates.size())));
   std::vector<std::vector<Crossing>> found(ChunkCount(candidates.size()));
