@@ -1,6 +1,9 @@
 #pragma once
 // Scenarios built in code for the validation tests (US inputs converted to SI here).
+#include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/units.h"
@@ -47,6 +50,25 @@ inline BodySpec RigidWall(double face_x_in) {
   wall.motion = MotionModel::kFixed;
   wall.initial.position = Vec3(face_x_in + 20.0, 0, 0) * u::kInch;
   return wall;
+}
+
+// a named change of a scenario that must not change its physics
+using ScenarioVariant = std::pair<std::string, std::function<void(Scenario*)>>;
+
+// the discretisation and frame variants every contact law is tested across: half the step, the
+// other search directions than the default, the stop-after-one rule, 3 passes, the frame turned 30°
+// (body order and mesh refinement depend on the scenario: each test adds its own)
+inline std::vector<ScenarioVariant> ContactVariants() {
+  return {
+      {"dt/2", [](Scenario* s) { s->time_step /= 2.0; }},
+      {"local average normal", [](Scenario* s) { s->contact.search_direction = SearchDirection::kLocalAverageNormal; }},
+      {"polygon normal", [](Scenario* s) { s->contact.search_direction = SearchDirection::kPolyNormal; }},
+      {"stop after one", [](Scenario* s) { s->contact.stop_rule = StopRule::kAfterOne; }},
+      {"3 passes", [](Scenario* s) { s->contact.passes_per_step = 3; }},
+      {"frame +30 deg", [](Scenario* s) {
+         for (BodySpec& b : s->bodies) TurnAboutVertical(30.0 * u::kDegree, &b);
+       }},
+  };
 }
 
 // an empty scenario in US units: its name in error messages, time step [s] and duration [s]

@@ -54,6 +54,9 @@ struct ContactEngine::Located {
   double depth = 0.0;        // [m] penetration along the triangle's normal (> 0 inside the master)
   Vec3 normal{0, 0, 0};      // master's outward normal of the triangle, unit, master frame
   Vec3 rel_velocity{0, 0, 0};  // [m/s] slave node relative to master, master frame
+
+  // spec §2 TOOFAR: the farthest a step restores, the relative motion of a step plus the margin [m]
+  double TooFar(double dt, double margin) const { return rel_velocity.norm() * dt + margin; }
 };
 
 }  // namespace dymesh

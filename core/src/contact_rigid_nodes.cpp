@@ -11,19 +11,10 @@
 namespace dymesh {
 namespace {
 
-// barycentric weights of p's projection on triangle abc, clamped to the triangle
-std::array<double, 3> ClampedBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 n = (b - a).cross(c - a);
-  const double nn = n.squaredNorm();
-  std::array<double, 3> w = {1.0 / 3, 1.0 / 3, 1.0 / 3};
-  if (!(nn > 0.0)) return w;
-  w = {(c - b).cross(p - b).dot(n) / nn, (a - c).cross(p - c).dot(n) / nn, (b - a).cross(p - a).dot(n) / nn};
-  double sum = 0.0;
-  for (double& x : w) sum += (x = std::max(x, 0.0));
-  if (!(sum > 0.0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
-  for (double& x : w) x /= sum;
-  return w;
-}
+// Tikhonov weight of the face fit, relative to the mean diagonal of its normal equations: small
+// enough to leave a fit over three or more spread nodes as it is, large enough to make a singular
+// fit (one node, nodes in a line) the least push
+constexpr double kFitRegularisation = 1e-6;
 
 // a rigid node that crossed a deformable face in the last step (deformable frame)
 struct Crossing {
@@ -50,7 +41,7 @@ std::array<double, 3> FacePush(const std::vector<Crossing>& crossings, std::size
     right += crossings[i].depth * w;
     deepest = std::max(deepest, crossings[i].depth);
   }
-  normal += 1e-6 * (normal.trace() / 3.0) * Mat3::Identity();
+  normal += kFitRegularisation * (normal.trace() / 3.0) * Mat3::Identity();
   const Vec3 push = normal.ldlt().solve(right).cwiseMax(0.0).cwiseMin(deepest);
   return {push[0], push[1], push[2]};
 }
@@ -64,11 +55,7 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
   sums.slave = rigid;
   BodyState& s = states_[deformable];
   const BodyModel& m = *models_[deformable];
-  PassFrame f{&m, models_[rigid].get(), &s, &states_[rigid], locators_[deformable].get(),
-              s.rigid.Rotation(), states_[rigid].rigid.Rotation(), Mat3::Identity(), Vec3::Zero(), nullptr,
-              0.0, false, pushed_[static_cast<size_t>(rigid) * body_count() + deformable].normalized()};
-  f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
-  f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - s.rigid.position);
+  const PassFrame f = FrameOf(deformable, rigid);
   const std::vector<int> candidates = CullCandidates(f, deformable, rigid, EngagedNodes{});
   if (candidates.empty()) return sums;
   locators_[deformable]->Prepare(rigid, step_index_, candidates,
@@ -88,7 +75,7 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
       Located hit;
       if (!LocateNode(f, candidates[i], false, nullptr, &chunks_[chunk].scratch, &hit)) continue;
       if (hit.depth <= options_.contact_tolerance || hit.rel_velocity.dot(hit.normal) >= 0.0) continue;
-      if (hit.depth > hit.rel_velocity.norm() * dt + options_.toofar_margin) continue;
+      if (hit.depth > hit.TooFar(dt, options_.toofar_margin)) continue;
       const auto& tri = m.mesh.triangles[hit.triangle];
       Crossing c{candidates[i], hit.triangle, hit.depth, f.ToMaster(f.slave->vertices[candidates[i]]), hit.normal};
       c.weight = ClampedBarycentric(c.point, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
@@ -147,7 +134,7 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
   auto crush_at = [&](const Crossing& c, bool after) {
     // the face's crush at the node: its corners' crush by the node's place (pushed corners as pushed)
     const auto& tri = m.mesh.triangles[c.triangle];
-    const auto w = ClampedBarycentric(c.point, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
+    const auto& w = c.weight;
     double crush = 0.0, top = 0.0;
     for (int k = 0; k < 3; ++k) {
       const auto at = std::lower_bound(corners.begin(), corners.end(), tri[k]);

@@ -359,15 +359,21 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   }
 }
 
-ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage, bool held,
-                                              EngagedNodes* engaged, double dt, ContactDiagnostics* diag) {
+ContactEngine::PassFrame ContactEngine::FrameOf(int master, int slave) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
               Mat3::Identity(), Vec3::Zero(), &pending_delta_[slave],
-              0.5 * (models_[master]->friction + models_[slave]->friction), held,
+              0.5 * (models_[master]->friction + models_[slave]->friction), false,
               pushed_[static_cast<size_t>(slave) * body_count() + master].normalized()};
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
+  return f;
+}
+
+ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage, bool held,
+                                              EngagedNodes* engaged, double dt, ContactDiagnostics* diag) {
+  PassFrame f = FrameOf(master, slave);
+  f.held = held;
 
   const std::vector<int> candidates = CullCandidates(f, master, slave, *engaged);
   diag->candidates += static_cast<long long>(candidates.size());
@@ -674,7 +680,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       ++diag->reduced;
     }
     // spec §2 TOOFAR_MARGIN: no restoring farther than the relative motion of a step plus the margin
-    const double too_far = hit->rel_velocity.norm() * dt + options_.toofar_margin;
+    const double too_far = hit->TooFar(dt, options_.toofar_margin);
     if (push > too_far) {
       push = too_far;
       ++diag->too_far_limited;

@@ -1,5 +1,6 @@
 #include "dymesh/core/geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dymesh {
@@ -40,6 +41,21 @@ Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   const double sum = va + vb + vc;
   if (!(sum > 0.0)) return a;
   return a + (vb / sum) * ab + (vc / sum) * ac;
+}
+
+std::array<double, 3> ClampedBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  // each corner's weight: the area of the sub-triangle opposite it over the whole, signed along n
+  const Vec3 n = TriangleCross(a, b, c);
+  const double nn = n.squaredNorm();
+  std::array<double, 3> w = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  if (!(nn > 0.0)) return w;
+  w = {(c - b).cross(p - b).dot(n) / nn, (a - c).cross(p - c).dot(n) / nn, (b - a).cross(p - a).dot(n) / nn};
+  // clamped to the triangle
+  double sum = 0.0;
+  for (double& x : w) sum += (x = std::max(x, 0.0));
+  if (!(sum > 0.0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  for (double& x : w) x /= sum;
+  return w;
 }
 
 bool RayPlaneDistance(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& n, double* t) {

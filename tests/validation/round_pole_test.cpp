@@ -79,21 +79,12 @@ TEST(RoundPole, StopsTheCarAtEveryOffset) {
 }
 
 TEST(RoundPole, StopsTheCarForEverySearchStopRulePassCountStepMeshOrderAndFrame) {
-  const std::vector<std::pair<std::string, std::function<void(Scenario*)>>> variants = {
-      {"dt/2", [](Scenario* s) { s->time_step /= 2.0; }},
-      {"local average normal", [](Scenario* s) { s->contact.search_direction = SearchDirection::kLocalAverageNormal; }},
-      {"polygon normal", [](Scenario* s) { s->contact.search_direction = SearchDirection::kPolyNormal; }},
-      {"stop after one", [](Scenario* s) { s->contact.stop_rule = StopRule::kAfterOne; }},
-      {"3 passes", [](Scenario* s) { s->contact.passes_per_step = 3; }},
-      {"car mesh 1:4", [](Scenario* s) { s->bodies[0].mesh.subdivisions += 1; }},
-      {"pole first", [](Scenario* s) {
-         std::swap(s->bodies[0], s->bodies[1]);
-         s->bodies[1].place_at_contact->with = 0;  // the pole, now listed first
-       }},
-      {"frame +30 deg", [](Scenario* s) {
-         for (BodySpec& b : s->bodies) testing::TurnAboutVertical(30.0 * u::kDegree, &b);
-       }},
-  };
+  std::vector<testing::ScenarioVariant> variants = testing::ContactVariants();
+  variants.push_back({"car mesh 1:4", [](Scenario* s) { s->bodies[0].mesh.subdivisions += 1; }});
+  variants.push_back({"pole first", [](Scenario* s) {
+                        std::swap(s->bodies[0], s->bodies[1]);
+                        s->bodies[1].place_at_contact->with = 0;  // the pole, now listed first
+                      }});
   for (const auto& [label, vary] : variants) {
     for (double offset : {5.0, 14.0}) ExpectPoleStopsCar(label, offset, vary);
   }

@@ -129,6 +129,8 @@ class ContactEngine {
   struct EngagedNodes {
     std::vector<int> touching, holding;
   };
+  // the frame of a pass of `slave`'s nodes against `master` (held: false)
+  PassFrame FrameOf(int master, int slave);
   PassSums RunPass(int master, int slave, bool stage, bool held, EngagedNodes* engaged, double dt,
                    ContactDiagnostics* diag);
   std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const EngagedNodes& engaged);

@@ -1,4 +1,6 @@
 #pragma once
+#include <array>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -42,6 +44,11 @@ bool CandidateCrossing(const Vec3& origin, const Vec3& dir, double t_min, double
 
 /// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5).
 Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// Barycentric weights of p's projection on the plane of triangle abc, clamped to the triangle:
+/// negative weights (p beyond an edge) set to zero and the rest rescaled to sum to 1; a degenerate
+/// triangle gives 1/3 each.
+std::array<double, 3> ClampedBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// Euler-angle DCM (spec §8, Amtx): maps body-frame vectors to the earth frame,
 /// R = Rz(yaw) * Ry(pitch) * Rx(roll), SAE axes (x forward, y right, z down).
