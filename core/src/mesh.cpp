@@ -228,6 +228,26 @@ TriMesh MakeBox(double length, double width, double height, int nx, int ny, int 
   return Weld(mesh, 1e-9 * std::sqrt(length * length + width * width + height * height));
 }
 
+double MedianEdgeLength(const TriMesh& mesh) {
+  // each edge once (keyed by its two vertices), then the middle of the sorted lengths
+  std::vector<std::uint64_t> keys;
+  keys.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) keys.push_back(EdgeKey(t[k], t[(k + 1) % 3]));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  if (keys.empty()) return 0.0;
+  std::vector<double> lengths;
+  lengths.reserve(keys.size());
+  for (std::uint64_t key : keys) {
+    const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+    lengths.push_back((mesh.vertices[a] - mesh.vertices[b]).norm());
+  }
+  const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+  std::nth_element(lengths.begin(), middle, lengths.end());
+  return *middle;
+}
+
 MeshStats ComputeStats(const TriMesh& mesh) {
   MeshStats s;
   s.vertices = static_cast<int>(mesh.vertices.size());

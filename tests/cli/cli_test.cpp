@@ -88,6 +88,33 @@ TEST_F(Cli, CheckPrintsMeshStatisticsInScenarioUnits) {
   EXPECT_EQ(r.err, "");
 }
 
+TEST_F(Cli, CheckNotesTwoDeformableBodiesBothCoarse) {
+  // two deformable boxes whose fronts are 6 in squares and sides 180 in strips (median edge 6.00 in)
+  Json j = BoxScenario();
+  j["bodies"][1] = j["bodies"][0];
+  j["bodies"][1]["name"] = "other";
+  j["bodies"][1]["initial"] = {{"position", {200, 0, 0}}, {"heading", 180}, {"speed", 30}};
+  auto notes = [&](const Json& scenario) {
+    const ProcessResult r = Dymesh({"check", Write("coarse.json", scenario.dump())});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::size_t count = 0;
+    for (std::size_t at = r.out.find("against another deformable body as coarse"); at != std::string::npos;
+         at = r.out.find("against another deformable body as coarse", at + 1))
+      ++count;
+    return std::pair<std::size_t, std::string>{count, r.out};
+  };
+  const auto [both, text] = notes(j);
+  EXPECT_EQ(both, 2u) << text;
+  EXPECT_NE(text.find("note: median edge 6.00 in"), std::string::npos) << text;
+  // one side meshed finely (2 in grid): its nodes meet the other's faces everywhere, no note
+  j["bodies"][1]["mesh"]["box"]["segments"] = {90, 33, 15};
+  EXPECT_EQ(notes(j).first, 0u);
+  // coarse but rigid: no note
+  j["bodies"][1]["mesh"]["box"]["segments"] = {1, 11, 5};
+  j["bodies"][1]["rigid"] = true;
+  EXPECT_EQ(notes(j).first, 0u);
+}
+
 TEST_F(Cli, QuietRunPrintsNothingAndWritesEverything) {
   const std::string path = Write("boxes.json", BoxScenario().dump());
   const ProcessResult r = Dymesh({"run", path, "--quiet", "--out", (dir_ / "out").string()});

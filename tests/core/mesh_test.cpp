@@ -103,6 +103,15 @@ TEST(Subdivide, KeepsAreaVolumeAndClosedness) {
   EXPECT_EQ(ComputeStats(finer).open_edges, 0);
 }
 
+TEST(MedianEdgeLength, UnitCubeAndItsSubdivision) {
+  // a unit cube as 12 triangles: 12 edges of 1 and 6 face diagonals of sqrt(2), each counted once
+  const TriMesh cube = MakeBox(1.0, 1.0, 1.0, 1, 1, 1);
+  EXPECT_DOUBLE_EQ(MedianEdgeLength(cube), 1.0);
+  // midpoint subdivision halves every edge
+  EXPECT_DOUBLE_EQ(MedianEdgeLength(Subdivide(cube)), 0.5);
+  EXPECT_EQ(MedianEdgeLength(TriMesh{}), 0.0);
+}
+
 TEST(Subdivide, KeepsWinding) {
   TriMesh tri;
   tri.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};

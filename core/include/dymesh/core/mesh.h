@@ -46,6 +46,9 @@ TriMesh MakeBox(double length, double width, double height, int nx, int ny, int 
 /// Vertex, triangle, edge and bounds statistics.
 MeshStats ComputeStats(const TriMesh& mesh);
 
+/// Median length of the mesh's distinct edges [mesh units]; 0 for a mesh without edges.
+double MedianEdgeLength(const TriMesh& mesh);
+
 /// Closed upright cylinder about the origin (axis z): `segments` facets around, side rows about
 /// as tall as a facet is wide, caps as fans about a centre vertex; wound outward.
 TriMesh MakeCylinder(double radius, double height, int segments);
