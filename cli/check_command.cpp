@@ -19,7 +19,7 @@ namespace {
 
 // median edge above which two deformable bodies, both this coarse, can pass partly through each other
 // where each one's nodes miss the other's faces (README, Known limits: head-on, 30 mph each, 30 in
-// offset, the NSX at 12.8 in kept 0.64 mph of delta-V, refined to 1.6 in 24.4; the p406 at 1.7 in
+// offset, the NSX at 12.8 in lost 0.64 mph of its 30, refined to 1.6 in 24.4; the p406 at 1.7 in
 // gives 21.0 mph, its lod6 at 5.0 in 15.0). A fine mesh against a coarse one meets it everywhere (the
 // p406 against the stock car's 4.5 in: the convergence rows)
 constexpr double kCoarseEdge = 3.0 * units::kInch;
@@ -34,8 +34,9 @@ std::string SourceText(const BodySpec& body) {
 }
 
 // counts, bounds and surfaces of one body's mesh (as the engine will use it: welded, about the CG)
-// `coarse_pair`: this body and another deformable body are both coarser than kCoarseEdge (median edge [m])
-void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double coarse_pair, std::ostream& out) {
+// `coarse_edge`: this body's median edge [m] when it and another deformable body are both coarser than
+// kCoarseEdge, else 0
+void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double coarse_edge, std::ostream& out) {
   const OutputUnits u = UnitsOf(scenario.units);
   const MeshStats s = ComputeStats(model.mesh);
   out << Format("  body %d \"%s\": %s\n", i, model.name.c_str(), SourceText(scenario.bodies[i]).c_str());
@@ -64,10 +65,10 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double c
     out << "    note: " << duplicates << " duplicated faces (on the same three vertices as another; tolerated up to 10 % of the faces)\n";
   if (s.open_edges > 0)
     out << "    note: open mesh (edges used by only one triangle): usual for display meshes\n";
-  if (coarse_pair > 0.0)
+  if (coarse_edge > 0.0)
     out << Format("    note: median edge %.2f %s: against another deformable body as coarse, nodes this far apart "
                   "miss each other's faces and the bodies can pass partly through each other (README, Known "
-                  "limits); mesh.subdivisions refines it\n", coarse_pair * u.length, u.length_name);
+                  "limits); mesh.subdivisions refines it\n", coarse_edge * u.length, u.length_name);
 }
 
 }  // namespace

@@ -34,6 +34,17 @@ std::uint64_t EdgeKey(int a, int b) {
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
+// every triangle's edges between distinct vertices as sorted keys, once per use
+std::vector<std::uint64_t> SortedEdgeUses(const TriMesh& mesh) {
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (t[k] != t[(k + 1) % 3]) edges.push_back(EdgeKey(t[k], t[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
 // a triangle is degenerate when two corners share an index or its area is zero to rounding
 bool IsDegenerate(const TriMesh& mesh, const std::array<int, 3>& t) {
   if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return true;
@@ -229,12 +240,8 @@ TriMesh MakeBox(double length, double width, double height, int nx, int ny, int 
 }
 
 double MedianEdgeLength(const TriMesh& mesh) {
-  // each edge once (keyed by its two vertices), then the middle of the sorted lengths
-  std::vector<std::uint64_t> keys;
-  keys.reserve(3 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) keys.push_back(EdgeKey(t[k], t[(k + 1) % 3]));
-  std::sort(keys.begin(), keys.end());
+  // each edge once, then the middle of its lengths
+  std::vector<std::uint64_t> keys = SortedEdgeUses(mesh);
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   if (keys.empty()) return 0.0;
   std::vector<double> lengths;
@@ -260,16 +267,11 @@ MeshStats ComputeStats(const TriMesh& mesh) {
       s.max = s.max.cwiseMax(p);
     }
   }
-  // degenerate triangles and edge keys
-  std::vector<std::uint64_t> edges;
-  edges.reserve(3 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles) {
+  // degenerate triangles
+  for (const auto& t : mesh.triangles)
     if (IsDegenerate(mesh, t)) ++s.degenerate_triangles;
-    for (int k = 0; k < 3; ++k)
-      if (t[k] != t[(k + 1) % 3]) edges.push_back(EdgeKey(t[k], t[(k + 1) % 3]));
-  }
   // count uses of each edge: one is open, more than two is non-manifold
-  std::sort(edges.begin(), edges.end());
+  const std::vector<std::uint64_t> edges = SortedEdgeUses(mesh);
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
     while (j < edges.size() && edges[j] == edges[i]) ++j;
