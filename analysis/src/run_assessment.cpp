@@ -95,6 +95,14 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          "through itself; the crush law or the stiffness does not fit this body",
                          s.bodies[i].name.c_str(), s.bodies[i].max_crush, length)});
   }
+  // contact that left the bodies closing along its impulse at over half their closing speed
+  if (s.closing_speed > 0.0 && s.separation_speed < kPassThroughSeparation * s.closing_speed)
+    w->push_back({"passed_through", "",
+                  Text("\"%s\" and \"%s\" still closed at %.0f %% of their closing speed when the run ended: "
+                       "they passed through each other instead of crushing (coarse meshes whose faces meet "
+                       "between their nodes); delta-V, crush and energies are not physical",
+                       s.bodies[0].name.c_str(), s.bodies[1].name.c_str(),
+                       -100.0 * s.separation_speed / s.closing_speed)});
   if (s.diagnostics.non_finite > 0)
     w->push_back({"non_finite_nodes", "",
                   Text("%lld node updates were skipped as non-finite", s.diagnostics.non_finite)});
