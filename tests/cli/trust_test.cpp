@@ -98,17 +98,16 @@ TEST_F(Trust, BodiesThatNeverMeetAreWarnedAndExitThree) {
 // rest to the other's corners, which miss its faces, so the boxes go through each other (README, Known
 // limits) and still close at ~94 % of their 60 mph when the contact has ended. Marked, not trusted
 TEST_F(Trust, BodiesThatPassThroughEachOtherAreWarnedAndExitThree) {
-  Json j = Json::parse(R"({
-    "name": "coarse boxes head-on", "units": "US",
-    "time": {"step": 0.0005, "duration": 0.5, "stop_at_separation": true},
-    "bodies": [
-      {"name": "a", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [1, 1, 1]}},
-       "weight": 3000, "restitution": 0.1, "stiffness": {"default": {"A": 300, "B": 100}},
-       "initial": {"position": [0, 0, 0], "speed": 30}},
-      {"name": "b", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [1, 1, 1]}},
-       "weight": 3000, "restitution": 0.1, "stiffness": {"default": {"A": 300, "B": 100}},
-       "initial": {"position": [181, 20, 0], "heading": 180, "speed": 30}}
-    ]})");
+  // BoxScenario's car twice, without the wall
+  Json j = BoxScenario();
+  j["time"]["duration"] = 0.5;
+  Json a = j["bodies"][0];
+  a["mesh"]["box"]["segments"] = {1, 1, 1};
+  Json b = a;
+  a["name"] = "a";
+  b["name"] = "b";
+  b["initial"] = Json::parse(R"({"position": [181, 20, 0], "heading": 180, "speed": 30})");
+  j["bodies"] = {a, b};
   const ProcessResult r = Run(j);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   const Json summary = Summary();
