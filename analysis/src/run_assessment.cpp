@@ -110,6 +110,10 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
 
 }  // namespace
 
+bool WarningVoidsResults(std::string_view code) {
+  return code == "passed_through" || code == "crush_beyond_length" || code == "energy_balance";
+}
+
 RunAssessment AssessRun(const Simulation& sim, const Summary& summary) {
   RunAssessment a;
   a.status = StatusOf(sim, summary);

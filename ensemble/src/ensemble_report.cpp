@@ -22,7 +22,7 @@ th:first-child, td:first-child { text-align: left; }
 svg.plot { border: 1px solid #e6e6e6; }
 )";
 
-// an output's values and the samples' inputs, over the complete samples in index order
+// an output's values and the samples' inputs, over the samples in the statistics in index order
 struct Column {
   std::vector<double> values;
   std::vector<std::vector<double>> inputs;
@@ -136,7 +136,7 @@ std::string StatisticsTable(const std::map<std::string, OutputStatistics>& stats
 std::string FailedTable(const std::vector<SampleRecord>& records) {
   std::string t = "<table id=\"table-failed\"><thead><tr><th>sample</th><th>status</th><th>why</th></tr></thead><tbody>\n";
   for (const SampleRecord& r : records) {
-    if (r.complete()) continue;
+    if (r.in_statistics()) continue;
     const nlohmann::json j = nlohmann::json::parse(r.line);
     const std::string why = j.contains("message") ? j["message"].get<std::string>() : j.value("warnings", nlohmann::json::array()).dump();
     t += "<tr><td>" + std::to_string(r.index) + "</td><td>" + XmlEscape(r.status) + "</td><td>" + XmlEscape(why) + "</td></tr>\n";
@@ -149,7 +149,7 @@ std::string SpecSection(const Spec& spec, int samples) {
                   XmlEscape(spec.scenario_file) + "; spec hash " + HashText(spec.hash) + "; seed " + std::to_string(spec.seed) +
                   "; design " + (spec.design == Design::kLatinHypercube ? "Latin hypercube" : "Monte Carlo") + ", " +
                   std::to_string(samples) + " samples; engine " + kEngineVersion +
-                  ". Values in the base scenario's units. Statistics use the complete samples only; the others are listed below.</p>\n";
+                  ". Values in the base scenario's units. Statistics use the complete samples whose warnings leave their results physical; the others are listed below.</p>\n";
   s += "<table id=\"table-inputs\"><thead><tr><th>input</th><th>path</th><th>distribution</th><th>bounds</th></tr></thead><tbody>\n";
   for (const Input& in : spec.inputs)
     s += "<tr><td>" + XmlEscape(in.name) + "</td><td>" + XmlEscape(in.path.empty() ? "(CRASH3 preset)" : in.path) + "</td><td>" +
@@ -165,10 +165,10 @@ std::string EnsembleReportHtml(const Spec& spec, const std::vector<SampleRecord>
   const auto stats = ComputeStatistics(records);
   std::string page = "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
                      "<title>DyMESH ensemble report</title>\n<style>" + std::string(kCss) + "</style>\n</head>\n<body>\n";
-  int complete = 0;
-  for (const SampleRecord& r : records) complete += r.complete();
+  int used = 0;
+  for (const SampleRecord& r : records) used += r.in_statistics();
   page += "<h1>Ensemble: " + XmlEscape(spec.file) + "</h1>\n<p>" + std::to_string(records.size()) + " samples, " +
-          std::to_string(complete) + " complete (in the statistics), " + std::to_string(records.size() - complete) +
+          std::to_string(used) + " in the statistics, " + std::to_string(records.size() - used) +
           " not (listed at the end).</p>\n";
   page += "<h2 id=\"statistics\">Statistics</h2>\n" + StatisticsTable(stats);
   // per output: distributions and convergence; delta-V outputs also get a tornado and scatter plots

@@ -169,7 +169,7 @@ class Collector {
       counts_.resumed = std::min(counts_.resumed, counts_.total);
     }
     counts_.ran = static_cast<int>(mine.size()) - counts_.resumed;
-    for (const auto& [index, r] : mine) counts_.failed += !r.complete();
+    for (const auto& [index, r] : mine) counts_.failed += !r.in_statistics();
     counts_.finished = static_cast<int>(mine.size()) == counts_.total;
     if (counts_.finished) {
       WriteResults(spec_, mine, dir_);
@@ -196,7 +196,7 @@ class Collector {
 
 namespace {
 
-// mean, P5 and P95 of every output over the complete samples with an index below `end`
+// mean, P5 and P95 of every output over the samples in the statistics with an index below `end`
 using Checkpoint = std::map<std::string, std::array<double, 3>>;
 Checkpoint CheckpointOf(const std::map<int, SampleRecord>& records, int end) {
   std::vector<SampleRecord> head;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "dymesh/accel/embree_locator.h"
+#include "dymesh/analysis/run_assessment.h"
 #include "dymesh/analysis/summary.h"
 #include "dymesh/core/units.h"
 #include "dymesh/io/body_models.h"
@@ -61,6 +62,13 @@ void RecordNotRun(const std::string& status, const std::string& why, Json* recor
 }
 
 }  // namespace
+
+bool SampleRecord::in_statistics() const {
+  if (status != RunStatusName(RunStatus::kComplete)) return false;
+  for (const std::string& code : warnings)
+    if (WarningVoidsResults(code)) return false;
+  return true;
+}
 
 SharedAssets::SharedAssets() : device_(std::make_shared<const accel::EmbreeDevice>()) {}
 
@@ -153,9 +161,13 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
   out->outputs.clear();
   out->observables.clear();
   out->inputs.clear();
+  out->warnings.clear();
+  if (j.contains("warnings") && j["warnings"].is_array())
+    for (const Json& w : j["warnings"])
+      if (w.is_string()) out->warnings.push_back(w.get<std::string>());
   if (j.contains("inputs"))
     for (const Input& in : spec.inputs) out->inputs.push_back(j["inputs"].value(in.name, 0.0));
-  if (out->complete() && j.contains("bodies")) {
+  if (out->in_statistics() && j.contains("bodies")) {
     for (const Json& b : j["bodies"]) {
       const std::string name = b["name"].get<std::string>();
       for (const char* q : kOutputQuantities)

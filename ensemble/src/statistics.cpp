@@ -9,6 +9,7 @@
 #include <limits>
 #include <numeric>
 
+#include "dymesh/analysis/run_assessment.h"
 #include "dymesh/ensemble/random_stream.h"
 
 namespace dymesh::ensemble {
@@ -94,7 +95,7 @@ nlohmann::json SobolJson(const Spec& spec, const std::vector<SampleRecord>& reco
 }
 
 // the one-at-a-time swings of one output: each input at its 5th and 95th percentile, the others at
-// their medians (runs that did not complete are left out)
+// their medians (samples not in the statistics are left out)
 nlohmann::json OneAtATimeJson(const Spec& spec, const std::vector<SampleRecord>& records, const std::string& name) {
   std::map<int, double> value;
   for (const SampleRecord& r : records)
@@ -223,7 +224,7 @@ std::vector<double> EvidenceWeights(const Spec& spec, const std::vector<SampleRe
   std::vector<double> log_w(records.size(), -std::numeric_limits<double>::infinity());
   double best = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < records.size(); ++i) {
-    if (!records[i].complete()) continue;
+    if (!records[i].in_statistics()) continue;
     double l = 0.0;
     bool known = true;
     for (const Evidence& e : spec.evidence) {
@@ -281,16 +282,25 @@ std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& reco
   j["samples"] = records.size();
   // a stop tolerance that ended the run before its sample count
   if (spec.stop_relative > 0.0 && static_cast<int>(records.size()) < spec.samples) j["converged_at_samples"] = records.size();
-  // counts by status: only complete samples enter the statistics
-  nlohmann::json counts = nlohmann::json::object();
-  for (const SampleRecord& r : records) counts[r.status] = counts.value(r.status, 0) + 1;
+  // counts by status, and of the complete samples a warning voids: the rest enter the statistics
+  nlohmann::json counts = nlohmann::json::object(), voided = nlohmann::json::object();
+  int used = 0;
+  for (const SampleRecord& r : records) {
+    counts[r.status] = counts.value(r.status, 0) + 1;
+    used += r.in_statistics();
+    if (r.status == RunStatusName(RunStatus::kComplete) && !r.in_statistics())
+      for (const std::string& code : r.warnings)
+        if (WarningVoidsResults(code)) voided[code] = voided.value(code, 0) + 1;
+  }
   j["status_counts"] = counts;
+  j["voided_by_warning"] = voided;
+  j["in_statistics"] = used;
   const auto stats = ComputeStatistics(records);
   for (const auto& [name, s] : stats) {
     nlohmann::json& o = j["outputs"][name];
     o = {{"n", s.n}, {"mean", s.mean}, {"sd", s.sd}, {"min", s.min}, {"max", s.max},
          {"p5", s.p5}, {"p50", s.p50}, {"p95", s.p95}};
-    // the output's values and inputs over the complete samples, in index order
+    // the output's values and inputs over the samples in the statistics, in index order
     std::vector<double> v;
     std::vector<std::vector<double>> x;
     for (const SampleRecord& r : records)
@@ -323,7 +333,7 @@ std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& reco
       o["sensitivity"][spec.inputs[k].name] = {{"spearman", Spearman(input, v)}, {"prcc", prcc[k]}};
     }
   }
-  // exceedance: P(output > threshold) over the complete samples
+  // exceedance: P(output > threshold) over the samples in the statistics
   for (const Threshold& t : spec.thresholds) {
     int above = 0, n = 0;
     for (const SampleRecord& r : records)

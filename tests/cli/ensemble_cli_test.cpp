@@ -142,18 +142,54 @@ TEST_F(Ensemble, SamplesOverTheTimeLimitAreRecordedAndRunAgainOnResume) {
   const fs::path out = dir_ / "limited";
   const ProcessResult limited = Dymesh({"ensemble", spec, "--quiet", "--sample-time-limit", "1e-6", "--out", out.string()});
   ASSERT_EQ(limited.exit_code, 0) << limited.err;
-  EXPECT_NE(limited.out.find("4 not complete"), std::string::npos) << limited.out;
+  EXPECT_NE(limited.out.find("4 failed"), std::string::npos) << limited.out;
   const std::string first = Line(out / "samples.jsonl", 0);
   EXPECT_NE(first.find("\"status\":\"timed_out\""), std::string::npos) << first;
   EXPECT_NE(first.find("ran over the sample time limit of 1e-06 s (wall clock)"), std::string::npos) << first;
   EXPECT_NE(ReadFile(out / "report.html").find("timed_out"), std::string::npos);
   const ProcessResult again = Dymesh({"ensemble", spec, "--quiet", "--out", out.string()});
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_NE(again.out.find("4 run now, 0 resumed, 0 not complete"), std::string::npos) << again.out;
+  EXPECT_NE(again.out.find("4 run now, 0 resumed, 0 failed"), std::string::npos) << again.out;
   EXPECT_EQ(ReadFile(out / "samples.jsonl"), ReadFile(dir_ / "fresh" / "samples.jsonl"));
   EXPECT_EQ(ReadFile(out / "ensemble.json"), ReadFile(dir_ / "fresh" / "ensemble.json"));
   // a limit that is not a positive number of seconds is refused before any sample
   EXPECT_EQ(Dymesh({"ensemble", spec, "--sample-time-limit", "0", "--out", (dir_ / "zero").string()}).exit_code, 2);
+}
+
+TEST_F(Ensemble, SamplesWhoseBodiesPassedThroughAreFailedAndLeftOutOfTheStatistics) {
+  // two single-quad box cars head-on at 30 mph each: in line they crush and part (delta-V ~33 mph
+  // each); 20 in apart laterally they pass through each other (the trust test's case, run warning
+  // passed_through, status complete). The Latin hypercube gives the two offsets 4 samples each.
+  const std::string car = R"({"mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [1, 1, 1]}},
+      "weight": 3000, "restitution": 0.1, "stiffness": {"default": {"A": 300, "B": 100}}, )";
+  const std::string scenario = Write("boxes.json", R"({"name": "boxes", "units": "US",
+    "time": {"step": 0.0005, "duration": 0.5, "stop_at_separation": true}, "bodies": [)" + car +
+    R"("name": "a", "initial": {"position": [0, 0, 0], "speed": 30}}, )" + car +
+    R"("name": "b", "initial": {"position": [181, 0, 0], "heading": 180, "speed": 30}}]})");
+  const std::string spec = Write("spec.json", R"({"scenario": ")" + scenario + R"(", "design": "latin_hypercube",
+    "samples": 8, "seed": 3, "inputs": [{"name": "offset", "path": "bodies[1].initial.position[1]",
+    "distribution": {"discrete": {"values": [0, 20]}}}]})");
+  const ProcessResult r = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("8 run now, 0 resumed, 4 failed"), std::string::npos) << r.out;
+  // every offset sample is recorded complete with the warning; the in-line ones are clean
+  for (int i = 0; i < 8; ++i) {
+    const nlohmann::json s = nlohmann::json::parse(Line(dir_ / "out" / "samples.jsonl", i));
+    EXPECT_EQ(s["status"], "complete") << i;
+    const bool offset = s["inputs"]["offset"].get<double>() == 20.0;
+    EXPECT_EQ(s["warnings"].dump(), offset ? "[\"passed_through\"]" : "[]") << i;
+  }
+  // the statistics hold the in-line samples only: delta-V near 33 mph, not the ~2 mph of a pass-through
+  const nlohmann::json stats = nlohmann::json::parse(ReadFile(dir_ / "out" / "ensemble.json"));
+  EXPECT_EQ(stats["status_counts"]["complete"], 8);
+  EXPECT_EQ(stats["voided_by_warning"]["passed_through"], 4);
+  EXPECT_EQ(stats["in_statistics"], 4);
+  EXPECT_EQ(stats["outputs"]["a.delta_v"]["n"], 4);
+  EXPECT_GT(stats["outputs"]["a.delta_v"]["min"].get<double>(), 25.0);
+  // the report lists them with why
+  const std::string html = ReadFile(dir_ / "out" / "report.html");
+  EXPECT_NE(html.find("4 in the statistics, 4 not"), std::string::npos);
+  EXPECT_NE(html.find("<td>complete</td><td>[&quot;passed_through&quot;]</td>"), std::string::npos);
 }
 
 TEST_F(Ensemble, KilledRunResumesToTheSameBytes) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <string_view>
 #include <vector>
 
 #include "dymesh/core/run_status.h"
@@ -19,6 +20,11 @@ inline constexpr double kEnergyBalanceTolerance = 0.01;
 /// demos: down to -0.11, -0.20 on the oblique one with the polygon-normal search); still closing at half their speed, the contact failed to stop them (coarse car
 /// meshes head-on: -0.56 to -0.97 of 60 mph).
 inline constexpr double kPassThroughSeparation = -0.5;
+
+/// Whether a run warning says a complete run's delta-V, crush and energies are not physical
+/// (passed_through, crush_beyond_length, energy_balance): an ensemble counts such a sample as failed
+/// and leaves it out of its statistics.
+bool WarningVoidsResults(std::string_view code);
 
 /// Relative speed [m/s] below which bodies still in contact at the end count as at rest.
 inline constexpr double kRestSpeed = 0.05;

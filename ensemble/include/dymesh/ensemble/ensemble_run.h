@@ -20,7 +20,7 @@ struct RunCounts {
   int total = 0;       ///< samples of this shard
   int resumed = 0;     ///< found already recorded in the folder
   int ran = 0;         ///< run now
-  int failed = 0;      ///< recorded with a status other than complete
+  int failed = 0;      ///< not in the statistics (SampleRecord::in_statistics)
   bool finished = false;  ///< every sample of the shard has a record (samples.jsonl and ensemble.json written)
 };
 

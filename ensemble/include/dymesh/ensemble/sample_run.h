@@ -29,7 +29,7 @@ class SharedAssets {
   std::map<std::string, std::shared_ptr<const TriMesh>> meshes_;
 };
 
-/// A sample's result: the record line and the outputs the statistics use (empty unless complete).
+/// A sample's result: the record line and the outputs the statistics use (empty unless in them).
 struct SampleRecord {
   int index = -1;
   std::string line;                        ///< JSON, no newline
@@ -37,9 +37,11 @@ struct SampleRecord {
   std::map<std::string, double> outputs{}; ///< "BODY.QUANTITY" -> value (scenario units)
   std::vector<double> inputs{};            ///< the sample's input values, in spec order
   std::map<std::string, double> observables{};  ///< outputs plus BODY.c1..c6, rest_x, rest_y, rest_heading
+  std::vector<std::string> warnings{};     ///< the run's warning codes
 
-  /// The run parted (status complete): its outputs enter the statistics.
-  bool complete() const { return status == RunStatusName(RunStatus::kComplete); }
+  /// The run parted (status complete) and no warning voids its results (WarningVoidsResults): its
+  /// outputs enter the statistics; any other sample is counted as failed.
+  bool in_statistics() const;
 };
 
 /// CRASH3 2-D coefficients of a preset from b0 and b1 (the preset's units): A = m b0 b1 / L,

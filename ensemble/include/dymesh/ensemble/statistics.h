@@ -46,7 +46,7 @@ struct SobolIndices {
 };
 SobolIndices SobolFromSaltelli(const std::vector<double>& fa, const std::vector<double>& fb, const std::vector<double>& fab);
 
-/// The evidence weights of the records (0 for those not complete or missing an observable), and
+/// The evidence weights of the records (0 for those not in the statistics or missing an observable), and
 /// their effective sample size (sum w)^2 / sum w^2.
 std::vector<double> EvidenceWeights(const Spec& spec, const std::vector<SampleRecord>& records, double* effective);
 
