@@ -147,7 +147,7 @@ std::string FailedTable(const std::vector<SampleRecord>& records) {
 std::string SpecSection(const Spec& spec, int samples) {
   std::string s = "<h2 id=\"spec\">Spec and assumptions</h2>\n<p class=\"note\">spec " + XmlEscape(spec.file) + "; base scenario " +
                   XmlEscape(spec.scenario_file) + "; spec hash " + HashText(spec.hash) + "; seed " + std::to_string(spec.seed) +
-                  "; design " + (spec.design == Design::kLatinHypercube ? "Latin hypercube" : "Monte Carlo") + ", " +
+                  "; design " + kDesignKeys[static_cast<int>(spec.design)] + ", " +
                   std::to_string(samples) + " samples; engine " + kEngineVersion +
                   ". Values in the base scenario's units. Statistics use the complete samples whose warnings leave their results physical; the others are listed below.</p>\n";
   s += "<table id=\"table-inputs\"><thead><tr><th>input</th><th>path</th><th>distribution</th><th>bounds</th></tr></thead><tbody>\n";

@@ -412,15 +412,11 @@ Spec LoadSpec(const std::string& path) {
   if (j.contains("correlation")) ParseCorrelation(r, j["correlation"], &spec);
   if (j.contains("design")) {
     const std::string d = j["design"].is_string() ? j["design"].get<std::string>() : "";
-    if (d == "monte_carlo") spec.design = Design::kMonteCarlo;
-    else if (d == "latin_hypercube") spec.design = Design::kLatinHypercube;
-    else if (d == "saltelli") spec.design = Design::kSaltelli;
-    else if (d == "grid") spec.design = Design::kGrid;
-    else if (d == "one_at_a_time") spec.design = Design::kOneAtATime;
-    else if (d == "table") spec.design = Design::kTable;
-    else if (d == "sobol") spec.design = Design::kSobol;
-    else r.Fail("design", "expected \"monte_carlo\", \"latin_hypercube\", \"saltelli\", \"grid\", \"one_at_a_time\" or "
-                          "\"table\" or \"sobol\", got " + j["design"].dump());
+    const auto key = std::find(kDesignKeys.begin(), kDesignKeys.end(), d);
+    if (key == kDesignKeys.end())
+      r.Fail("design", "expected \"monte_carlo\", \"latin_hypercube\", \"saltelli\", \"grid\", \"one_at_a_time\" or "
+                       "\"table\" or \"sobol\", got " + j["design"].dump());
+    spec.design = static_cast<Design>(key - kDesignKeys.begin());
   }
   if (j.contains("samples")) {
     const double n = r.Number(j["samples"], "samples");

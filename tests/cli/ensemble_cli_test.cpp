@@ -262,6 +262,8 @@ TEST_F(Ensemble, OneAtATimeGivesTheSwings) {
   EXPECT_NEAR(oat["baseline"].get<double>(), 33.0, 0.05 * 33.0);
   EXPECT_NEAR(oat["inputs"]["speed"]["swing"].get<double>(), 9.9, 0.1 * 9.9);
   EXPECT_NEAR(oat["inputs"]["restitution"]["swing"].get<double>(), 5.4, 0.2 * 5.4);
+  // the report names the design by its spec key
+  EXPECT_NE(ReadFile(dir_ / "out" / "report.html").find("; design one_at_a_time, "), std::string::npos);
 }
 
 TEST_F(Ensemble, EvidenceGivesThePosteriorOfTheImpactSpeed) {

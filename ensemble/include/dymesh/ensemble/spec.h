@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,6 +21,9 @@ namespace dymesh::ensemble {
 /// its 5th and 2 + 2i at its 95th percentile, the others at their medians. kTable: the spec's rows.
 /// kSobol: the Owen-scrambled Sobol' sequence (one dimension per input, in input order).
 enum class Design { kMonteCarlo, kLatinHypercube, kSaltelli, kGrid, kOneAtATime, kTable, kSobol };
+/// The designs' keys in a spec's `design`, in Design's order.
+inline constexpr std::array<const char*, 7> kDesignKeys = {"monte_carlo", "latin_hypercube", "saltelli", "grid",
+                                                           "one_at_a_time", "table", "sobol"};
 
 /// The first checkpoint of a stop tolerance when the spec gives no `min_samples`.
 inline constexpr int kDefaultStopMinSamples = 50;
