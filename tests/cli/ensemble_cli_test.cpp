@@ -12,6 +12,7 @@
 
 #include "../ensemble/box_spec.h"
 #include "cli_fixture.h"
+#include "coarse_boxes.h"
 #include "process.h"
 #include "xml_check.h"
 
@@ -157,15 +158,10 @@ TEST_F(Ensemble, SamplesOverTheTimeLimitAreRecordedAndRunAgainOnResume) {
 }
 
 TEST_F(Ensemble, SamplesWhoseBodiesPassedThroughAreFailedAndLeftOutOfTheStatistics) {
-  // two single-quad box cars head-on at 30 mph each: in line they crush and part (delta-V ~33 mph
-  // each); 20 in apart laterally they pass through each other (the trust test's case, run warning
-  // passed_through, status complete). The Latin hypercube gives the two offsets 4 samples each.
-  const std::string car = R"({"mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [1, 1, 1]}},
-      "weight": 3000, "restitution": 0.1, "stiffness": {"default": {"A": 300, "B": 100}}, )";
-  const std::string scenario = Write("boxes.json", R"({"name": "boxes", "units": "US",
-    "time": {"step": 0.0005, "duration": 0.5, "stop_at_separation": true}, "bodies": [)" + car +
-    R"("name": "a", "initial": {"position": [0, 0, 0], "speed": 30}}, )" + car +
-    R"("name": "b", "initial": {"position": [181, 0, 0], "heading": 180, "speed": 30}}]})");
+  // the coarse boxes head-on: in line they crush and part (delta-V ~33 mph each); 20 in apart
+  // laterally they pass through each other (the trust test's case, run warning passed_through, status
+  // complete). The Latin hypercube gives the two offsets 4 samples each.
+  const std::string scenario = Write("boxes.json", dymesh::testing::CoarseBoxesHeadOn(0.0).dump());
   const std::string spec = Write("spec.json", R"({"scenario": ")" + scenario + R"(", "design": "latin_hypercube",
     "samples": 8, "seed": 3, "inputs": [{"name": "offset", "path": "bodies[1].initial.position[1]",
     "distribution": {"discrete": {"values": [0, 20]}}}]})");
