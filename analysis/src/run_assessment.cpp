@@ -23,6 +23,8 @@ bool SummaryFinite(const Summary& s) {
   bool ok = std::isfinite(s.kinetic_before + s.kinetic_after + s.crush_energy + s.friction_energy + s.law_energy +
                           s.energy_balance_error + s.closing_speed + s.separation_speed) &&
             s.momentum_before.allFinite() && s.momentum_after.allFinite();
+  for (const PairSummary& p : s.pairs)
+    ok = ok && std::isfinite(p.closing_speed + p.separation_speed) && p.direction.allFinite();
   for (const BodySummary& b : s.bodies)
     ok = ok && std::isfinite(b.delta_v + b.pdof_deg + b.peak_accel + b.average_accel + b.max_crush +
                              b.max_dynamic_crush + b.crush_energy + b.friction_energy + b.law_energy +
@@ -95,14 +97,15 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          "through itself; the crush law or the stiffness does not fit this body",
                          s.bodies[i].name.c_str(), s.bodies[i].max_crush, length)});
   }
-  // contact that left the bodies closing along its impulse at over half their closing speed
-  if (s.closing_speed > 0.0 && s.separation_speed < kPassThroughSeparation * s.closing_speed)
-    w->push_back({"passed_through", "",
-                  Text("\"%s\" and \"%s\" still closed at %.0f %% of their closing speed when the run ended: "
-                       "they passed through each other instead of crushing (coarse meshes whose faces meet "
-                       "between their nodes); delta-V, crush and energies are not physical",
-                       s.bodies[0].name.c_str(), s.bodies[1].name.c_str(),
-                       -100.0 * s.separation_speed / s.closing_speed)});
+  // a pair's contact that left it closing along its impulse at over half its closing speed
+  for (const PairSummary& p : s.pairs)
+    if (p.closing_speed > 0.0 && p.separation_speed < kPassThroughSeparation * p.closing_speed)
+      w->push_back({"passed_through", "",
+                    Text("\"%s\" and \"%s\" still closed at %.0f %% of their closing speed when the run ended: "
+                         "they passed through each other instead of crushing (coarse meshes whose faces meet "
+                         "between their nodes); delta-V, crush and energies are not physical",
+                         s.bodies[p.a].name.c_str(), s.bodies[p.b].name.c_str(),
+                         -100.0 * p.separation_speed / p.closing_speed)});
   if (s.diagnostics.non_finite > 0)
     w->push_back({"non_finite_nodes", "",
                   Text("%lld node updates were skipped as non-finite", s.diagnostics.non_finite)});

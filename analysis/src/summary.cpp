@@ -70,6 +70,21 @@ BodySummary SummarizeBody(const Simulation& sim, int i) {
 }
 
 
+// closing speed when the pair's contact began, separation speed at the end, along its impulse
+PairSummary SummarizePair(const Simulation& sim, const PairContact& c) {
+  PairSummary p;
+  p.a = c.a;
+  p.b = c.b;
+  p.direction = c.impulse_on_a.normalized();
+  const Sample& start = sim.history()[c.first_sample];
+  const Vec3 before = start.bodies[c.a].rigid.velocity - start.bodies[c.b].rigid.velocity;
+  const Vec3 after = sim.engine().state(c.a).rigid.velocity - sim.engine().state(c.b).rigid.velocity;
+  p.closing_speed = -before.dot(p.direction);
+  p.separation_speed = after.dot(p.direction);
+  p.contact_start = start.time;
+  return p;
+}
+
 }  // namespace
 
 Summary Summarize(const Simulation& sim) {
@@ -94,17 +109,20 @@ Summary Summarize(const Simulation& sim) {
   sum.energy_discontinuity = sum.crush_energy - sum.law_energy;
   const double lost = sum.kinetic_before - sum.kinetic_after;
   sum.energy_balance_error = lost != 0.0 ? (lost - sum.crush_energy - sum.friction_energy) / lost : 0.0;
-  // closing and separation speed of the first pair along the impulse on body 0
-  if (engine.body_count() >= 2) {
-    const Vec3 impulse = EarthImpulse(sim, 0);
-    if (impulse.norm() > 0.0) {
-      const Vec3 n = impulse.normalized();
-      sum.collision_direction = n;
-      const Vec3 before = first.bodies[0].rigid.velocity - first.bodies[1].rigid.velocity;
-      const Vec3 after = engine.state(0).rigid.velocity - engine.state(1).rigid.velocity;
-      sum.closing_speed = -before.dot(n);
-      sum.separation_speed = after.dot(n);
+  // each pair's closing and separation speed along its impulse; the largest impulse is the main one
+  double largest = 0.0;
+  for (const PairContact& c : sim.pair_contacts()) {
+    sum.pairs.push_back(SummarizePair(sim, c));
+    if (c.impulse_on_a.norm() > largest) {
+      largest = c.impulse_on_a.norm();
+      sum.main_pair = static_cast<int>(sum.pairs.size()) - 1;
     }
+  }
+  if (sum.main_pair >= 0) {
+    const PairSummary& p = sum.pairs[sum.main_pair];
+    sum.collision_direction = p.direction;
+    sum.closing_speed = p.closing_speed;
+    sum.separation_speed = p.separation_speed;
   }
   sum.contact_start = sim.first_contact_time();
   sum.contact_end = sim.last_contact_time();

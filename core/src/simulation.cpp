@@ -1,5 +1,6 @@
 #include "dymesh/core/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -135,6 +136,16 @@ void Simulation::AcceptHostStates(const std::vector<RigidState>& states) {
 }
 
 void Simulation::NoteContact(const StepResult& step, double dt) {
+  // each loaded pair's impulse; its contact began at the state the last sample holds
+  for (const PairLoads& p : step.pairs) {
+    const Vec3 on_a = p.normal_force[0] + p.friction_force[0];
+    if (on_a.squaredNorm() == 0.0) continue;
+    auto known = std::find_if(pair_contacts_.begin(), pair_contacts_.end(),
+                              [&](const PairContact& c) { return c.a == p.body[0] && c.b == p.body[1]; });
+    if (known == pair_contacts_.end())
+      known = pair_contacts_.insert(pair_contacts_.end(), {p.body[0], p.body[1], Vec3::Zero(), history_.size() - 1});
+    known->impulse_on_a += on_a * dt;
+  }
   bool in_contact = false;
   for (const CgLoads& loads : step.loads) in_contact = in_contact || loads.force_earth.squaredNorm() > 0.0;
   if (!in_contact) return;

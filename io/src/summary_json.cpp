@@ -87,6 +87,18 @@ nlohmann::json SummaryObject(const Summary& s, UnitSystem system) {
       {"contact_end_s", s.contact_end},
       {"steps", s.steps},
   };
+  // every pair that touched, the main one's speeds repeated in "overall" above
+  j["pairs"] = nlohmann::json::array();
+  for (const PairSummary& p : s.pairs)
+    j["pairs"].push_back({
+        {"bodies", {p.a, p.b}},
+        {"names", {s.bodies[p.a].name, s.bodies[p.b].name}},
+        {"main", &p == &s.pairs[s.main_pair]},
+        {"contact_start_s", p.contact_start},
+        {"closing_speed", p.closing_speed * u.speed},
+        {"separation_speed", p.separation_speed * u.speed},
+        {"effective_restitution", p.closing_speed > 0 ? p.separation_speed / p.closing_speed : 0.0},
+    });
   j["warnings"] = nlohmann::json::array();
   for (const RunWarning& w : s.warnings) j["warnings"].push_back({{"code", w.code}, {"field", w.field}, {"message", w.message}});
   j["diagnostics"] = {{"candidates", d.candidates}, {"located", d.located}, {"touching", d.touching},

@@ -162,9 +162,14 @@ std::string OverallTable(const Context& c) {
                (s.crush_energy != 0.0 ? FormatFixed(100.0 * s.energy_discontinuity / s.crush_energy, 1) + " %" : "-")));
   t += Row(std::string("momentum before / after [") + u.momentum_name + "]",
            one(FormatFixed(s.momentum_before.norm() * u.momentum, 1) + " / " + FormatFixed(s.momentum_after.norm() * u.momentum, 1)));
-  t += Row(std::string("closing / separation speed [") + u.speed_name + "]",
-           one(FormatFixed(s.closing_speed * u.speed, 2) + " / " + FormatFixed(s.separation_speed * u.speed, 2)));
-  t += Row("effective restitution", one(FormatFixed(s.closing_speed > 0 ? s.separation_speed / s.closing_speed : 0.0, 3)));
+  // per pair that touched (one row for a two-body run)
+  for (const PairSummary& p : s.pairs) {
+    const std::string pair = s.pairs.size() > 1 ? " \"" + s.bodies[p.a].name + "\" / \"" + s.bodies[p.b].name + "\"" : "";
+    t += Row("closing / separation speed" + pair + " [" + u.speed_name + "]",
+             one(FormatFixed(p.closing_speed * u.speed, 2) + " / " + FormatFixed(p.separation_speed * u.speed, 2)));
+    t += Row("effective restitution" + pair,
+             one(FormatFixed(p.closing_speed > 0 ? p.separation_speed / p.closing_speed : 0.0, 3)));
+  }
   const ContactDiagnostics& d = s.diagnostics;
   t += Row("diagnostics: candidates / located / touching / faces pushed by rigid nodes",
            one(std::to_string(d.candidates) + " / " + std::to_string(d.located) + " / " + std::to_string(d.touching) +

@@ -146,16 +146,16 @@ struct Instant {
   bool deformed;  // outline of the final (crushed) mesh rather than the undamaged one
 };
 
-// maximum engagement: the sample of the contact window where the first pair has approached most
-// along the impulse on body 0 (the common-velocity instant)
+// maximum engagement: the sample of the contact window where the main pair has approached most
+// along its impulse (the common-velocity instant)
 std::size_t MaxEngagement(const Context& c, std::size_t first, std::size_t last) {
   const std::vector<Sample>& h = c.sim.history();
-  const Vec3& n = c.summary.collision_direction;
-  if (c.sim.engine().body_count() < 2 || n.norm() == 0.0) return first;
+  if (c.summary.main_pair < 0) return first;
+  const PairSummary& p = c.summary.pairs[c.summary.main_pair];
   std::size_t best = first;
   double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t k = first; k <= last; ++k) {
-    const double d = (h[k].bodies[0].rigid.position - h[k].bodies[1].rigid.position).dot(n);
+    const double d = (h[k].bodies[p.a].rigid.position - h[k].bodies[p.b].rigid.position).dot(p.direction);
     if (d < lowest) lowest = d, best = k;
   }
   return best;

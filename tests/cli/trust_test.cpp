@@ -110,6 +110,52 @@ TEST_F(Trust, BodiesThatPassThroughEachOtherAreWarnedAndExitThree) {
   EXPECT_TRUE(Has(r.err, "passed through each other")) << r.err;
 }
 
+// A third, parked box 400 in to the side of the coarse boxes head-on, at index `at`: it never
+// touches them, so the collision is the pair of the other two
+Json WithParkedBox(Json scenario, int at) {
+  Json parked = scenario["bodies"][0];
+  parked["name"] = "parked";
+  parked["initial"] = {{"position", {90, 400, 0}}, {"speed", 0}};
+  scenario["bodies"].insert(scenario["bodies"].begin() + at, parked);
+  return scenario;
+}
+
+// Three bodies, the pass-through between the second and third: the marker reads every pair, not
+// the first two bodies (a parked one and a box, which never touch)
+TEST_F(Trust, APassThroughBetweenAnyPairIsWarned) {
+  const ProcessResult r = Run(WithParkedBox(dymesh::testing::CoarseBoxesHeadOn(20.0), 0));
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  const Json pairs = Summary()["pairs"];
+  ASSERT_EQ(pairs.size(), 1u) << pairs.dump();
+  EXPECT_EQ(pairs[0]["bodies"].dump(), "[1,2]");
+  EXPECT_LT(pairs[0]["separation_speed"].get<double>(), -0.5 * pairs[0]["closing_speed"].get<double>());
+  EXPECT_EQ(WarningCodes().count("passed_through"), 1u);
+  EXPECT_TRUE(Has(r.err, "\"a\" and \"b\" still closed at")) << r.err;
+}
+
+// Three bodies, the first and third in line head-on, the parked one listed between them: the pair's
+// closing speed is the two boxes' 30 + 30 mph (the impulse lies along their line by symmetry, so to
+// round-off), not the first box's speed against the parked one; its separation speed is the two-body
+// run's to the last digit (the parked box takes no part in any pass); and its restitution is the
+// boxes' e = 0.1 within 3 %, the validation table's bar for the rebound law on a pure line of nodes
+TEST_F(Trust, EachPairReportsItsOwnClosingAndSeparationSpeed) {
+  ASSERT_EQ(Run(dymesh::testing::CoarseBoxesHeadOn(0.0)).exit_code, 0);
+  const Json two = Summary()["overall"];
+  const ProcessResult r = Run(WithParkedBox(dymesh::testing::CoarseBoxesHeadOn(0.0), 1));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json summary = Summary();
+  ASSERT_EQ(summary["pairs"].size(), 1u) << summary["pairs"].dump();
+  const Json pair = summary["pairs"][0];
+  EXPECT_EQ(pair["bodies"].dump(), "[0,2]");
+  EXPECT_EQ(pair["names"].dump(), "[\"a\",\"b\"]");
+  EXPECT_TRUE(pair["main"].get<bool>());
+  EXPECT_NEAR(pair["closing_speed"].get<double>(), 60.0, 60.0 * 1e-9);
+  EXPECT_EQ(pair["separation_speed"].get<double>(), two["separation_speed"].get<double>());
+  EXPECT_NEAR(pair["effective_restitution"].get<double>(), 0.1, 0.003);
+  EXPECT_EQ(summary["overall"]["closing_speed"], pair["closing_speed"]);
+  EXPECT_EQ(summary["overall"]["effective_restitution"], pair["effective_restitution"]);
+}
+
 // ---- time step --------------------------------------------------------------------------------
 
 TEST_F(Trust, CheckPrintsTheRecommendedStep) {

@@ -33,6 +33,15 @@ struct BodySummary {
   CrushProfile crush_profile;    ///< CRASH3-style C1..C6 on the damaged face
 };
 
+/// One pair's collision, along the impulse the pair exchanged.
+struct PairSummary {
+  int a = 0, b = 1;                   ///< scenario body indices, a < b
+  Vec3 direction{0, 0, 0};            ///< unit earth-frame impulse b gave a
+  double closing_speed = 0.0;         ///< [m/s] of a toward b along `direction`'s reverse, when the contact began
+  double separation_speed = 0.0;      ///< [m/s] of a away from b along `direction`, at the end of the run
+  double contact_start = 0.0;         ///< [s]
+};
+
 /// Results of a run.
 struct Summary {
   std::vector<BodySummary> bodies;
@@ -42,9 +51,13 @@ struct Summary {
   double law_energy = 0.0;            ///< [J] node-law work, all bodies
   double energy_discontinuity = 0.0;  ///< [J] ledger crush work - node-law work
   double energy_balance_error = 0.0;  ///< (KE lost - crush - friction) / KE lost
-  Vec3 collision_direction{0, 0, 0};  ///< unit earth-frame impulse on body 0 (zero without contact)
-  double closing_speed = 0.0;         ///< [m/s] along the impulse direction (first pair)
-  double separation_speed = 0.0;      ///< [m/s] along the impulse direction (first pair)
+  std::vector<PairSummary> pairs;     ///< every pair that carried a load, in the order their contact began
+  /// the main collision: the pair with the largest impulse (-1 without contact); the three fields
+  /// below repeat its direction and speeds
+  int main_pair = -1;
+  Vec3 collision_direction{0, 0, 0};  ///< unit earth-frame impulse on the main pair's first body
+  double closing_speed = 0.0;         ///< [m/s] along the impulse direction (main pair)
+  double separation_speed = 0.0;      ///< [m/s] along the impulse direction (main pair)
   double contact_start = -1.0, contact_end = -1.0;  ///< [s]
   int steps = 0;
   double end_time = 0.0;              ///< [s] time reached

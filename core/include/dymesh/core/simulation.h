@@ -32,6 +32,13 @@ struct Sample {
   std::vector<BodySample> bodies;
 };
 
+/// One pair's contact over a run (bodies a < b, scenario order).
+struct PairContact {
+  int a = 0, b = 1;
+  Vec3 impulse_on_a{0, 0, 0};  ///< [N s] earth frame, the collision impulse b gave a (normal and friction)
+  std::size_t first_sample = 0;  ///< history index of the state at which the pair's contact began
+};
+
 /// Bodies with no collision load for this long after contact have separated [s]; also the window
 /// over which a run at rest in contact must show no growing force.
 inline constexpr double kSeparationWindow = 0.02;
@@ -87,6 +94,8 @@ class Simulation {
   const std::vector<PairPlacement>& placements() const { return placements_; }
   double time() const { return time_; }
   double first_contact_time() const { return first_contact_time_; }
+  /// Every pair that carried a collision load, in the order their contact began.
+  const std::vector<PairContact>& pair_contacts() const { return pair_contacts_; }
   double last_contact_time() const { return last_contact_time_; }
 
  private:
@@ -108,6 +117,7 @@ class Simulation {
   double host_step_ = 0.0;                    // force-provider mode: the step length while it is uniform
   TimeStepGuide guide_;
   std::vector<PairPlacement> placements_;
+  std::vector<PairContact> pair_contacts_;
 };
 
 }  // namespace dymesh
