@@ -24,7 +24,8 @@ bool SummaryFinite(const Summary& s) {
                           s.energy_balance_error + s.closing_speed + s.separation_speed) &&
             s.momentum_before.allFinite() && s.momentum_after.allFinite();
   for (const PairSummary& p : s.pairs)
-    ok = ok && std::isfinite(p.closing_speed + p.separation_speed) && p.direction.allFinite();
+    ok = ok && std::isfinite(p.closing_speed + p.separation_speed + p.point_closing_speed + p.point_separation_speed) &&
+         p.direction.allFinite();
   for (const BodySummary& b : s.bodies)
     ok = ok && std::isfinite(b.delta_v + b.pdof_deg + b.peak_accel + b.average_accel + b.max_crush +
                              b.max_dynamic_crush + b.crush_energy + b.friction_energy + b.law_energy +

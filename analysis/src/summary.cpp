@@ -70,7 +70,20 @@ BodySummary SummarizeBody(const Simulation& sim, int i) {
 }
 
 
-// closing speed when the pair's contact began, separation speed at the end, along its impulse
+// the point of the impulse's line of action nearest the CG, from the impulse J and its moment H
+// about the CG (H = r x J): r = J x H / |J|^2 [m, earth frame]
+Vec3 LineOfAction(const Vec3& impulse, const Vec3& angular_impulse) {
+  return impulse.cross(angular_impulse) / impulse.squaredNorm();
+}
+
+// earth velocity in state `now` of the body's material point at earth offset r from its CG in state `at`
+Vec3 PointVelocity(const RigidState& now, const RigidState& at, const Vec3& r) {
+  const Mat3 rotation = now.Rotation();
+  return now.velocity + (rotation * now.omega).cross(rotation * (at.Rotation().transpose() * r));
+}
+
+// closing speed when the pair's contact began, separation speed at the end, along its impulse; at the
+// CGs and at the impact point
 PairSummary SummarizePair(const Simulation& sim, const PairContact& c) {
   PairSummary p;
   p.a = c.a;
@@ -81,6 +94,12 @@ PairSummary SummarizePair(const Simulation& sim, const PairContact& c) {
   const Vec3 after = sim.engine().state(c.a).rigid.velocity - sim.engine().state(c.b).rigid.velocity;
   p.closing_speed = -before.dot(p.direction);
   p.separation_speed = after.dot(p.direction);
+  const Vec3 r_a = LineOfAction(c.impulse_on_a, c.angular_impulse_on_a);
+  const Vec3 r_b = LineOfAction(-c.impulse_on_a, c.angular_impulse_on_b);
+  const RigidState &a0 = start.bodies[c.a].rigid, &b0 = start.bodies[c.b].rigid;
+  const RigidState &a1 = sim.engine().state(c.a).rigid, &b1 = sim.engine().state(c.b).rigid;
+  p.point_closing_speed = -(PointVelocity(a0, a0, r_a) - PointVelocity(b0, b0, r_b)).dot(p.direction);
+  p.point_separation_speed = (PointVelocity(a1, a0, r_a) - PointVelocity(b1, b0, r_b)).dot(p.direction);
   p.contact_start = start.time;
   return p;
 }

@@ -143,8 +143,11 @@ void Simulation::NoteContact(const StepResult& step, double dt) {
     auto known = std::find_if(pair_contacts_.begin(), pair_contacts_.end(),
                               [&](const PairContact& c) { return c.a == p.body[0] && c.b == p.body[1]; });
     if (known == pair_contacts_.end())
-      known = pair_contacts_.insert(pair_contacts_.end(), {p.body[0], p.body[1], Vec3::Zero(), history_.size() - 1});
+      known = pair_contacts_.insert(pair_contacts_.end(),
+                                    {p.body[0], p.body[1], Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), history_.size() - 1});
     known->impulse_on_a += on_a * dt;
+    known->angular_impulse_on_a += (p.normal_moment[0] + p.friction_moment[0]) * dt;
+    known->angular_impulse_on_b += (p.normal_moment[1] + p.friction_moment[1]) * dt;
   }
   bool in_contact = false;
   for (const CgLoads& loads : step.loads) in_contact = in_contact || loads.force_earth.squaredNorm() > 0.0;

@@ -98,6 +98,9 @@ nlohmann::json SummaryObject(const Summary& s, UnitSystem system) {
         {"closing_speed", p.closing_speed * u.speed},
         {"separation_speed", p.separation_speed * u.speed},
         {"effective_restitution", p.closing_speed > 0 ? p.separation_speed / p.closing_speed : 0.0},
+        {"point_closing_speed", p.point_closing_speed * u.speed},
+        {"point_separation_speed", p.point_separation_speed * u.speed},
+        {"point_restitution", p.point_closing_speed > 0 ? p.point_separation_speed / p.point_closing_speed : 0.0},
     });
   j["warnings"] = nlohmann::json::array();
   for (const RunWarning& w : s.warnings) j["warnings"].push_back({{"code", w.code}, {"field", w.field}, {"message", w.message}});

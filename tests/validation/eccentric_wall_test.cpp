@@ -100,6 +100,43 @@ TEST(EccentricWall, EveryStopRuleMatchesImpulseMomentum) {
   ExpectClosedForm(SearchDirection::kVelocity, StopRule::kBestOfTwo, 0.0005, 0.0, "best_of_two");
 }
 
+// With restitution e at the impact point the normal impulse is (1 + e) times the plastic one, and the
+// contact point leaves at e times its closing speed while the CG leaves at P/m - v:
+//   P = (1 + e) v / (1/m + arm^2 / I),  point restitution e,  CG restitution (P/m - v) / v
+// (0.119 here against e = 0.3: the summary's CG-based restitution is not the coefficient). The
+// velocity search is left out: it loses this rebound (README, Known limits)
+TEST(EccentricWall, RestitutionIsMetAtTheImpactPointNotAtTheCg) {
+  const double e = 0.3;
+  for (SearchDirection direction : {SearchDirection::kLocalAverageNormal, SearchDirection::kPolyNormal,
+                                    SearchDirection::kSpecified})
+    for (double frame : {0.0, 37.0 * u::kDegree}) {
+      Scenario scenario = EccentricScenario(direction, StopRule::kBestOfAll, 0.0005, frame);
+      scenario.bodies[0].restitution = e;
+      auto device = std::make_shared<const accel::EmbreeDevice>();
+      Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
+      sim.Run();
+      const Summary s = Summarize(sim);
+      ASSERT_EQ(s.pairs.size(), 1u);
+      const PairSummary& p = s.pairs[0];
+      const BodySpec& box = scenario.bodies[0];
+      const double v = kSpeedMph * u::kMph, arm = kArm * u::kInch, m = box.mass, izz = (*box.inertia_diagonal).z();
+      const double impulse = (1 + e) * v / (1 / m + arm * arm / izz);
+      const double cg_restitution = (impulse / m - v) / v;
+      const double point_restitution = p.point_separation_speed / p.point_closing_speed;
+      std::printf("[measured] eccentric wall e %.2f: point restitution %.4f, CG %.4f (closed form %.4f), "
+                  "delta-V %.4f m/s (%.4f)\n", e, point_restitution, p.separation_speed / p.closing_speed,
+                  cg_restitution, s.bodies[0].delta_v, impulse / m);
+      // at rest before the contact, the contact point closes at the CG's speed (round-off)
+      EXPECT_NEAR(p.point_closing_speed, v, 1e-9 * v);
+      // 10 %, the bar of the plastic case above and for the same reason: the load's arm moves as the
+      // box yaws during the pulse, so the point the closed form takes is not exactly the one loaded
+      EXPECT_NEAR(point_restitution, e, 0.1 * e);
+      EXPECT_NEAR(s.bodies[0].delta_v, impulse / m, 0.1 * impulse / m);
+      // the CG's ratio is far from e, as the closed form says (0.119 against 0.3)
+      EXPECT_LT(p.separation_speed / p.closing_speed, 0.5 * e);
+    }
+}
+
 TEST(EccentricWall, HalfTimeStepAndRotatedFrame) {
   ExpectClosedForm(SearchDirection::kVelocity, StopRule::kBestOfAll, 0.00025, 0.0, "dt/2");
   ExpectClosedForm(SearchDirection::kVelocity, StopRule::kBestOfAll, 0.0005, 37.0 * u::kDegree, "frame +37 deg");

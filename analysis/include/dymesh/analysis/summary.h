@@ -39,6 +39,9 @@ struct PairSummary {
   Vec3 direction{0, 0, 0};            ///< unit earth-frame impulse b gave a
   double closing_speed = 0.0;         ///< [m/s] of a toward b along `direction`'s reverse, when the contact began
   double separation_speed = 0.0;      ///< [m/s] of a away from b along `direction`, at the end of the run
+  /// [m/s] the same at the impact point: the material points of a and b on the impulse's line of action
+  /// (its moments about each CG give the line; any point on it gives the same normal speed)
+  double point_closing_speed = 0.0, point_separation_speed = 0.0;
   double contact_start = 0.0;         ///< [s]
 };
 

@@ -36,6 +36,8 @@ struct Sample {
 struct PairContact {
   int a = 0, b = 1;
   Vec3 impulse_on_a{0, 0, 0};  ///< [N s] earth frame, the collision impulse b gave a (normal and friction)
+  Vec3 angular_impulse_on_a{0, 0, 0};  ///< [N m s] earth frame, its moment about a's CG, summed over the steps
+  Vec3 angular_impulse_on_b{0, 0, 0};  ///< [N m s] earth frame, the moment of a's on b about b's CG
   std::size_t first_sample = 0;  ///< history index of the state at which the pair's contact began
 };
 
