@@ -7,12 +7,6 @@
 
 namespace dymesh {
 
-Vec3 EarthImpulse(const Simulation& sim, int body) {
-  Vec3 impulse = Vec3::Zero();
-  for (const Sample& s : sim.history()) impulse += s.bodies[body].loads.force_earth * sim.scenario().time_step;
-  return impulse;
-}
-
 Vec3 BodyFrameImpulse(const Simulation& sim, int body) {
   Vec3 impulse = Vec3::Zero();
   for (const Sample& s : sim.history()) impulse += s.bodies[body].loads.force_body * sim.scenario().time_step;
@@ -139,7 +133,6 @@ Summary Summarize(const Simulation& sim) {
   }
   if (sum.main_pair >= 0) {
     const PairSummary& p = sum.pairs[sum.main_pair];
-    sum.collision_direction = p.direction;
     sum.closing_speed = p.closing_speed;
     sum.separation_speed = p.separation_speed;
   }

@@ -55,10 +55,9 @@ struct Summary {
   double energy_discontinuity = 0.0;  ///< [J] ledger crush work - node-law work
   double energy_balance_error = 0.0;  ///< (KE lost - crush - friction) / KE lost
   std::vector<PairSummary> pairs;     ///< every pair that carried a load, in the order their contact began
-  /// the main collision: the pair with the largest impulse (-1 without contact); the three fields
-  /// below repeat its direction and speeds
+  /// the main collision: the pair with the largest impulse (-1 without contact); the two fields
+  /// below repeat its speeds
   int main_pair = -1;
-  Vec3 collision_direction{0, 0, 0};  ///< unit earth-frame impulse on the main pair's first body
   double closing_speed = 0.0;         ///< [m/s] along the impulse direction (main pair)
   double separation_speed = 0.0;      ///< [m/s] along the impulse direction (main pair)
   double contact_start = -1.0, contact_end = -1.0;  ///< [s]
@@ -72,10 +71,8 @@ struct Summary {
 /// Computes the summary from a finished (or stopped) run.
 Summary Summarize(const Simulation& sim);
 
-/// The collision impulse on body `body` over the recorded history [N s]: the one definition the
-/// summary (PDOF, closing speed) and the report (maximum engagement) use. Earth frame, or body frame
-/// (the body-frame loads of each step summed: the PDOF's frame).
-Vec3 EarthImpulse(const Simulation& sim, int body);
+/// The collision impulse on body `body` over the recorded history [N s], body frame (the body-frame
+/// loads of each step summed: the PDOF's frame).
 Vec3 BodyFrameImpulse(const Simulation& sim, int body);
 
 /// Permanent crush |Delta| of every vertex of body i [m].

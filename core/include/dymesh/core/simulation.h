@@ -96,9 +96,9 @@ class Simulation {
   const std::vector<PairPlacement>& placements() const { return placements_; }
   double time() const { return time_; }
   double first_contact_time() const { return first_contact_time_; }
+  double last_contact_time() const { return last_contact_time_; }
   /// Every pair that carried a collision load, in the order their contact began.
   const std::vector<PairContact>& pair_contacts() const { return pair_contacts_; }
-  double last_contact_time() const { return last_contact_time_; }
 
  private:
   void Record(const StepResult* step);
