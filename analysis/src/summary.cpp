@@ -84,14 +84,12 @@ PairSummary SummarizePair(const Simulation& sim, const PairContact& c) {
   p.b = c.b;
   p.direction = c.impulse_on_a.normalized();
   const Sample& start = sim.history()[c.first_sample];
-  const Vec3 before = start.bodies[c.a].rigid.velocity - start.bodies[c.b].rigid.velocity;
-  const Vec3 after = sim.engine().state(c.a).rigid.velocity - sim.engine().state(c.b).rigid.velocity;
-  p.closing_speed = -before.dot(p.direction);
-  p.separation_speed = after.dot(p.direction);
-  const Vec3 r_a = LineOfAction(c.impulse_on_a, c.angular_impulse_on_a);
-  const Vec3 r_b = LineOfAction(-c.impulse_on_a, c.angular_impulse_on_b);
   const RigidState &a0 = start.bodies[c.a].rigid, &b0 = start.bodies[c.b].rigid;
   const RigidState &a1 = sim.engine().state(c.a).rigid, &b1 = sim.engine().state(c.b).rigid;
+  p.closing_speed = -(a0.velocity - b0.velocity).dot(p.direction);
+  p.separation_speed = (a1.velocity - b1.velocity).dot(p.direction);
+  const Vec3 r_a = LineOfAction(c.impulse_on_a, c.angular_impulse_on_a);
+  const Vec3 r_b = LineOfAction(-c.impulse_on_a, c.angular_impulse_on_b);
   p.point_closing_speed = -(PointVelocity(a0, a0, r_a) - PointVelocity(b0, b0, r_b)).dot(p.direction);
   p.point_separation_speed = (PointVelocity(a1, a0, r_a) - PointVelocity(b1, b0, r_b)).dot(p.direction);
   p.contact_start = start.time;
