@@ -413,9 +413,11 @@ Spec LoadSpec(const std::string& path) {
   if (j.contains("design")) {
     const std::string d = j["design"].is_string() ? j["design"].get<std::string>() : "";
     const auto key = std::find(kDesignKeys.begin(), kDesignKeys.end(), d);
-    if (key == kDesignKeys.end())
-      r.Fail("design", "expected \"monte_carlo\", \"latin_hypercube\", \"saltelli\", \"grid\", \"one_at_a_time\" or "
-                       "\"table\" or \"sobol\", got " + j["design"].dump());
+    if (key == kDesignKeys.end()) {
+      std::string keys;
+      for (const char* k : kDesignKeys) keys += (keys.empty() ? "\"" : ", \"") + std::string(k) + "\"";
+      r.Fail("design", "expected one of " + keys + ", got " + j["design"].dump());
+    }
     spec.design = static_cast<Design>(key - kDesignKeys.begin());
   }
   if (j.contains("samples")) {

@@ -97,10 +97,10 @@ nlohmann::json SummaryObject(const Summary& s, UnitSystem system) {
         {"contact_start_s", p.contact_start},
         {"closing_speed", p.closing_speed * u.speed},
         {"separation_speed", p.separation_speed * u.speed},
-        {"effective_restitution", p.closing_speed > 0 ? p.separation_speed / p.closing_speed : 0.0},
+        {"effective_restitution", p.restitution()},
         {"point_closing_speed", p.point_closing_speed * u.speed},
         {"point_separation_speed", p.point_separation_speed * u.speed},
-        {"point_restitution", p.point_closing_speed > 0 ? p.point_separation_speed / p.point_closing_speed : 0.0},
+        {"point_restitution", p.point_restitution()},
     });
   j["warnings"] = nlohmann::json::array();
   for (const RunWarning& w : s.warnings) j["warnings"].push_back({{"code", w.code}, {"field", w.field}, {"message", w.message}});

@@ -168,8 +168,7 @@ std::string OverallTable(const Context& c) {
     t += Row("closing / separation speed" + pair + " [" + u.speed_name + "]",
              one(FormatFixed(p.closing_speed * u.speed, 2) + " / " + FormatFixed(p.separation_speed * u.speed, 2)));
     t += Row("effective restitution at the CGs / at the impact point" + pair,
-             one(FormatFixed(p.closing_speed > 0 ? p.separation_speed / p.closing_speed : 0.0, 3) + " / " +
-                 FormatFixed(p.point_closing_speed > 0 ? p.point_separation_speed / p.point_closing_speed : 0.0, 3)));
+             one(FormatFixed(p.restitution(), 3) + " / " + FormatFixed(p.point_restitution(), 3)));
   }
   const ContactDiagnostics& d = s.diagnostics;
   t += Row("diagnostics: candidates / located / touching / faces pushed by rigid nodes",

@@ -16,9 +16,9 @@ inline constexpr double kEnergyBalanceTolerance = 0.01;
 
 /// Separation speed along the impulse, as a fraction of the closing speed, below which the bodies
 /// passed through each other: contact that stops them leaves them receding (a positive fraction, the
-/// restitution), or on eccentric and yawing impacts a CG-based speed a little below zero (the
-/// demos: down to -0.11, -0.20 on the oblique one with the polygon-normal search); still closing at half their speed, the contact failed to stop them (coarse car
-/// meshes head-on: -0.56 to -0.97 of 60 mph).
+/// restitution), or on eccentric and yawing impacts a CG-based speed a little below zero (the demos:
+/// down to -0.11, -0.20 on the oblique one with the polygon-normal search); still closing at half
+/// their speed, the contact failed to stop them (coarse car meshes head-on: -0.56 to -0.97 of 60 mph).
 inline constexpr double kPassThroughSeparation = -0.5;
 
 /// Whether a run warning says a complete run's delta-V, crush and energies are not physical

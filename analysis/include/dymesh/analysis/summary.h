@@ -43,6 +43,12 @@ struct PairSummary {
   /// (its moments about each CG give the line; any point on it gives the same normal speed)
   double point_closing_speed = 0.0, point_separation_speed = 0.0;
   double contact_start = 0.0;         ///< [s]
+
+  /// separation over closing speed at the CGs, and at the impact point (0 when they did not close)
+  double restitution() const { return closing_speed > 0.0 ? separation_speed / closing_speed : 0.0; }
+  double point_restitution() const {
+    return point_closing_speed > 0.0 ? point_separation_speed / point_closing_speed : 0.0;
+  }
 };
 
 /// Results of a run.
