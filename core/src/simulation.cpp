@@ -127,6 +127,10 @@ void Simulation::AcceptHostStates(const std::vector<RigidState>& states) {
       throw std::invalid_argument("body " + std::to_string(i) + ": non-finite pose or velocity");
   }
   for (int i = 0; i < engine_->body_count(); ++i) engine_->SetRigidState(i, states[i]);
+  // before the first step the run starts where the host has the bodies, not where construction put
+  // them (delta-V and a contact that begins in the first step are measured from here)
+  if (steps_ == 0)
+    for (int i = 0; i < engine_->body_count(); ++i) history_.front().bodies[i].rigid = states[i];
   // the previous step ends here: book its work and record it
   if (host_pending_) {
     engine_->AccountWork();

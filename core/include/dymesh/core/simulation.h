@@ -67,7 +67,8 @@ class Simulation {
   /// `states` are every body's pose and velocities now, as the host integrated them; returns the
   /// collision loads at each CG for the coming step of length `dt` and updates crush. The step
   /// before is recorded with these states (history, energy ledger), so the summary, the report and
-  /// the outputs work from a host-driven run. Throws std::invalid_argument for a count that is not
+  /// the outputs work from a host-driven run; the first call's states are where the run starts
+  /// (delta-V, a pair's closing speed). Throws std::invalid_argument for a count that is not
   /// the body count, a non-finite state or dt <= 0, and std::logic_error once finished.
   StepResult HostStep(const std::vector<RigidState>& states, double dt);
 
