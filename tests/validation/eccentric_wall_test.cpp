@@ -91,15 +91,17 @@ void ExpectClosedForm(SearchDirection direction, StopRule stop, double time_step
               label, -dv.x(), expected.delta_v, yaw_rate, expected.yaw_rate, dv.y(), s.law_energy / s.crush_energy);
 }
 
+// every search method with its scenario name; the velocity search (the default) first
+const struct {
+  SearchDirection direction;
+  const char* label;
+} kSearches[] = {{SearchDirection::kVelocity, "velocity"},
+                 {SearchDirection::kLocalAverageNormal, "local_average_normal"},
+                 {SearchDirection::kPolyNormal, "poly_normal"},
+                 {SearchDirection::kSpecified, "specified"}};
+
 TEST(EccentricWall, EverySearchDirectionMatchesImpulseMomentum) {
-  const struct {
-    SearchDirection direction;
-    const char* label;
-  } cases[] = {{SearchDirection::kVelocity, "velocity"},
-               {SearchDirection::kLocalAverageNormal, "local_average_normal"},
-               {SearchDirection::kPolyNormal, "poly_normal"},
-               {SearchDirection::kSpecified, "specified"}};
-  for (const auto& c : cases) ExpectClosedForm(c.direction, StopRule::kBestOfAll, 0.0005, 0.0, c.label);
+  for (const auto& c : kSearches) ExpectClosedForm(c.direction, StopRule::kBestOfAll, 0.0005, 0.0, c.label);
 }
 
 TEST(EccentricWall, EveryStopRuleMatchesImpulseMomentum) {
@@ -141,17 +143,13 @@ void ExpectPointRestitution(Scenario scenario, bool wall_first, const std::strin
 // Every search but the velocity one (it loses this rebound: README, Known limits), in two frames and
 // with either body listed first
 TEST(EccentricWall, RestitutionIsMetAtTheImpactPointNotAtTheCg) {
-  const struct {
-    SearchDirection direction;
-    const char* label;
-  } searches[] = {{SearchDirection::kLocalAverageNormal, "local_average_normal"},
-                  {SearchDirection::kPolyNormal, "poly_normal"},
-                  {SearchDirection::kSpecified, "specified"}};
-  for (const auto& search : searches)
+  for (const auto& search : kSearches) {
+    if (search.direction == SearchDirection::kVelocity) continue;
     for (double frame : {0.0, 37.0 * u::kDegree})
       for (bool wall_first : {false, true})
         ExpectPointRestitution(EccentricScenario(search.direction, StopRule::kBestOfAll, 0.0005, frame), wall_first,
                                std::string(search.label) + (frame != 0.0 ? ", frame +37 deg" : ""));
+  }
 }
 
 // The same bars at dt/2, with the box meshed 1:4, with three passes per step and with each stop rule
