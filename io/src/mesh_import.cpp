@@ -3,11 +3,14 @@
 #include "dymesh/io/atomic_file.h"
 #include "dymesh/io/memory_budget.h"
 #include "dymesh/io/scenario_json.h"
+#include "mesh_text_check.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -23,6 +26,9 @@ namespace {
 
 // weld tolerance relative to the bounds diagonal (merges only coincident vertices)
 constexpr double kRelativeWeldTolerance = 1e-9;
+
+// most digits of an OBJ number's integer part (assimp reads it into 64 bits, which overflow past 19)
+constexpr long kMaxObjDigits = 18;
 
 // most corners of one OBJ face
 constexpr std::size_t kMaxObjFaceCorners = 1000;
@@ -78,11 +84,15 @@ std::array<SignedAxis, 3> AxesMapping(const MeshSource& source, const std::strin
   return axes;
 }
 
-// an OBJ number token read whole ("0,1" or "1abc" are not numbers; assimp reads their prefix)
+// an OBJ number token read whole ("0,1" or "1abc" are not numbers; assimp reads their prefix), with at
+// most kMaxObjDigits digits before its point (assimp's reader overflowed a 25-digit integer to 0)
 bool IsObjNumber(const std::string& token) {
   char* end = nullptr;
   std::strtod(token.c_str(), &end);
-  return !token.empty() && end == token.c_str() + token.size() && token.find_first_of("xX") == std::string::npos;
+  const std::string mantissa = token.substr(0, token.find_first_of(".eE"));
+  const auto digits = std::count_if(mantissa.begin(), mantissa.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+  return !token.empty() && end == token.c_str() + token.size() && token.find_first_of("xX") == std::string::npos &&
+         digits <= kMaxObjDigits;
 }
 
 // an OBJ face corner: v, v/vt, v//vn or v/vt/vn, each a (possibly negative) nonzero integer
@@ -150,6 +160,7 @@ TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
   // the file must exist
   if (const std::string problem = NotARegularFile(path); !problem.empty()) throw InputError(path, field, problem);
   CheckObjLines(path, field);
+  CheckPlyOrOff(path, field);
   // read with assimp: triangles, shared vertices, every node's transform applied
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(

@@ -239,6 +239,51 @@ TEST(MeshFiles, LoadRefusesMissingAndGarbage) {
   }
 }
 
+// the message of the InputError loading `text` as `name` raises ("" when it loads)
+std::string LoadProblem(const TempFolder& dir, const std::string& name, const std::string& text) {
+  const std::string path = (dir / name).string();
+  WriteText(path, text);
+  try {
+    LoadMeshFile(path, "bodies[0].mesh.file");
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.field(), "bodies[0].mesh.file");
+    return e.what();
+  }
+  return "";
+}
+
+// assimp aborted (a face of no corners, counts the data does not hold), crashed (an index past the
+// vertices) or reserved a header's billion vertices on these; each is now refused by line
+TEST(MeshFiles, PlyAndOffWhoseCountsOrIndicesAreWrongAreRefused) {
+  const TempFolder dir;
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_EQ(LoadProblem(dir, "ok.ply", ply + "3 0 1 2\n"), "");
+  EXPECT_NE(LoadProblem(dir, "past.ply", ply + "4 0 1 2 99\n").find("vertex index \"99\" is not one of the 3"), std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "minus.ply", ply + "3 -1 0 1\n").find("vertex index \"-1\""), std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "none.ply", ply + "0\n").find("at least three vertices"), std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "short.ply", ply).find("the file ends after 0"), std::string::npos);
+  std::string lying = ply;
+  lying.replace(lying.find("vertex 3"), 8, "vertex 1000000000");
+  EXPECT_NE(LoadProblem(dir, "lying.ply", lying + "3 0 1 2\n").find("counts 1000000000 vertex lines"), std::string::npos);
+  // binary: the counts must fit in the bytes after the header (3 floats per vertex, a list per face)
+  const std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\nproperty float x\n"
+                             "property float y\nproperty float z\nend_header\n";
+  EXPECT_NE(LoadProblem(dir, "lying_binary.ply", binary + std::string(36, '\0')).find("need at least 12000000000 bytes"),
+            std::string::npos);
+  const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_EQ(LoadProblem(dir, "ok.off", off + "3 0 1 2\n"), "");
+  EXPECT_NE(LoadProblem(dir, "past.off", off + "3 0 1 7\n").find("vertex index \"7\""), std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "lying.off", "OFF\n3 5 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").find("the file ends after 4"),
+            std::string::npos);
+  // an OBJ integer part assimp's 64-bit reader overflows (it read this as 0)
+  EXPECT_NE(LoadProblem(dir, "long.obj", "v -9999999999999999999999999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").find("expected a number, got \"-999"),
+            std::string::npos);
+  EXPECT_EQ(LoadProblem(dir, "fine.obj", "v -0.12345678901234567890123 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "");
+}
+
 TEST(BuildBodyMesh, MapsAxesScalesAndFits) {
   const TempFolder dir;
   const std::string path = (dir / "yup.obj").string();

@@ -1,0 +1,169 @@
+#include "mesh_text_check.h"
+
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "dymesh/io/scenario_json.h"
+
+namespace dymesh {
+namespace {
+
+// one element of a PLY header: its name, count, and the smallest bytes a binary record takes
+struct PlyElement {
+  std::string name;
+  std::uint64_t count = 0;
+  std::uint64_t min_bytes = 0;
+  std::vector<bool> is_list;  // per property
+};
+
+// bytes of a PLY scalar type (0 when unknown)
+std::uint64_t PlyTypeBytes(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+std::string Lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// a whole non-negative integer token below `limit`
+bool IndexBelow(const std::string& token, std::uint64_t limit) {
+  if (token.empty() || token.size() > 19) return false;
+  for (char c : token)
+    if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+  return std::stoull(token) < limit;
+}
+
+// the next data line that is not blank (and, for OFF, not a comment); false at the end of the file
+bool NextDataLine(std::istream& in, bool skip_comments, long* number, std::string* line) {
+  while (std::getline(in, *line)) {
+    ++*number;
+    const auto first = line->find_first_not_of(" \t\r");
+    if (first == std::string::npos || (skip_comments && (*line)[first] == '#')) continue;
+    return true;
+  }
+  return false;
+}
+
+// one face line: "n i1 .. in" with n >= 3 and every index below the vertex count
+std::string FaceProblem(const std::string& line, std::uint64_t vertices) {
+  std::istringstream tokens(line);
+  std::string token;
+  tokens >> token;
+  if (!IndexBelow(token, 1u << 20) || std::stoull(token) < 3) return "expected a face of at least three vertices";
+  const std::uint64_t corners = std::stoull(token);
+  for (std::uint64_t i = 0; i < corners; ++i) {
+    if (!(tokens >> token)) return "expected " + std::to_string(corners) + " vertex indices";
+    if (!IndexBelow(token, vertices))
+      return "vertex index \"" + token + "\" is not one of the " + std::to_string(vertices) + " vertices";
+  }
+  return "";
+}
+
+// " at line N ("...")" for messages
+std::string At(long number, const std::string& line) {
+  return "line " + std::to_string(number) + " (\"" + line.substr(0, 60) + "\")";
+}
+
+void CheckPly(const std::string& path, const std::string& field) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line, format;
+  std::vector<PlyElement> elements;
+  long number = 0;
+  // header: the elements in order, their counts and record sizes
+  while (std::getline(in, line)) {
+    ++number;
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword == "end_header") break;
+    if (keyword == "format") tokens >> format;
+    if (keyword == "element") {
+      PlyElement e;
+      std::string count;
+      tokens >> e.name >> count;
+      if (!IndexBelow(count, UINT64_C(1) << 40)) throw InputError(path, field, At(number, line) + ": expected an element count");
+      e.count = std::stoull(count);
+      elements.push_back(e);
+    }
+    if (keyword == "property" && !elements.empty()) {
+      std::string type;
+      tokens >> type;
+      const bool list = type == "list";
+      if (list) tokens >> type;  // the count's type: a list takes at least its count
+      elements.back().min_bytes += PlyTypeBytes(type);
+      elements.back().is_list.push_back(list);
+    }
+  }
+  if (line.rfind("end_header", 0) != 0) throw InputError(path, field, "PLY header has no end_header");
+  std::uint64_t vertices = 0;
+  for (const PlyElement& e : elements)
+    if (e.name == "vertex") vertices = e.count;
+  // binary: the counts must fit in the bytes after the header
+  if (format != "ascii") {
+    const std::uint64_t left = std::filesystem::file_size(path) - static_cast<std::uint64_t>(in.tellg());
+    std::uint64_t need = 0;
+    for (const PlyElement& e : elements) need += e.count * std::max<std::uint64_t>(e.min_bytes, 1);
+    if (need > left)
+      throw InputError(path, field, "PLY header counts need at least " + std::to_string(need) + " bytes of data; the file has " +
+                                        std::to_string(left));
+    return;
+  }
+  // ASCII: every counted line is there, faces name existing vertices
+  for (const PlyElement& e : elements)
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      if (!NextDataLine(in, false, &number, &line))
+        throw InputError(path, field, "PLY header counts " + std::to_string(e.count) + " " + e.name + " lines; the file ends after " +
+                                          std::to_string(i));
+      if (e.name != "face") continue;
+      if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
+        throw InputError(path, field, At(number, line) + ": " + problem);
+    }
+}
+
+void CheckOff(const std::string& path, const std::string& field) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  long number = 0;
+  // "OFF" (maybe with the counts on the same line), then "vertices faces edges"
+  if (!NextDataLine(in, true, &number, &line)) throw InputError(path, field, "empty OFF file");
+  std::istringstream head(line);
+  std::string keyword, v, f;
+  head >> keyword;
+  if (keyword.find("OFF") == std::string::npos) throw InputError(path, field, At(number, line) + ": expected \"OFF\"");
+  if (!(head >> v >> f)) {
+    if (!NextDataLine(in, true, &number, &line)) throw InputError(path, field, "OFF file has no counts line");
+    std::istringstream counts(line);
+    counts >> v >> f;
+  }
+  if (!IndexBelow(v, UINT64_C(1) << 40) || !IndexBelow(f, UINT64_C(1) << 40))
+    throw InputError(path, field, At(number, line) + ": expected the vertex and face counts");
+  const std::uint64_t vertices = std::stoull(v), faces = std::stoull(f);
+  for (std::uint64_t i = 0; i < vertices + faces; ++i) {
+    if (!NextDataLine(in, true, &number, &line))
+      throw InputError(path, field, "OFF header counts " + v + " vertices and " + f + " faces; the file ends after " +
+                                        std::to_string(i) + " lines of them");
+    if (i < vertices) continue;
+    if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
+      throw InputError(path, field, At(number, line) + ": " + problem);
+  }
+}
+
+}  // namespace
+
+void CheckPlyOrOff(const std::string& path, const std::string& field) {
+  const std::string extension = Lower(std::filesystem::path(path).extension().string());
+  if (extension == ".ply") CheckPly(path, field);
+  if (extension == ".off") CheckOff(path, field);
+}
+
+}  // namespace dymesh
