@@ -9,8 +9,6 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -26,12 +24,6 @@ namespace {
 
 // weld tolerance relative to the bounds diagonal (merges only coincident vertices)
 constexpr double kRelativeWeldTolerance = 1e-9;
-
-// most digits of an OBJ number's integer part (assimp reads it into 64 bits, which overflow past 19)
-constexpr long kMaxObjDigits = 18;
-
-// most corners of one OBJ face
-constexpr std::size_t kMaxObjFaceCorners = 1000;
 
 // largest share of a mesh's faces that may repeat another face
 constexpr double kMaxDuplicateFaces = 0.10;
@@ -84,64 +76,6 @@ std::array<SignedAxis, 3> AxesMapping(const MeshSource& source, const std::strin
   return axes;
 }
 
-// an OBJ number token read whole ("0,1" or "1abc" are not numbers; assimp reads their prefix), with at
-// most kMaxObjDigits digits before its point (assimp's reader overflowed a 25-digit integer to 0)
-bool IsObjNumber(const std::string& token) {
-  char* end = nullptr;
-  std::strtod(token.c_str(), &end);
-  const std::string mantissa = token.substr(0, token.find_first_of(".eE"));
-  const auto digits = std::count_if(mantissa.begin(), mantissa.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-  return !token.empty() && end == token.c_str() + token.size() && token.find_first_of("xX") == std::string::npos &&
-         digits <= kMaxObjDigits;
-}
-
-// an OBJ face corner: v, v/vt, v//vn or v/vt/vn, each a (possibly negative) nonzero integer
-bool IsObjCorner(const std::string& token) {
-  std::istringstream parts(token);
-  std::string part;
-  int index = 0;
-  while (std::getline(parts, part, '/')) {
-    const bool may_be_empty = index == 1 && token.find("//") != std::string::npos;
-    char* end = nullptr;
-    const long value = part.empty() ? 0 : std::strtol(part.c_str(), &end, 10);
-    if (!(part.empty() && may_be_empty) && (part.empty() || end != part.c_str() + part.size() || value == 0)) return false;
-    ++index;
-  }
-  return index >= 1 && index <= 3 && token.back() != '/';
-}
-
-// assimp reads a vertex coordinate up to its first bad character and drops a face of fewer than
-// three corners without a word: an OBJ file is read through once first, so that such a line is
-// refused with its number
-void CheckObjLines(const std::string& path, const std::string& field) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".obj") return;
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  for (long number = 1; std::getline(in, line); ++number) {
-    std::istringstream tokens(line);
-    std::string keyword, token;
-    tokens >> keyword;
-    std::vector<std::string> rest;
-    while (tokens >> token) rest.push_back(token);
-    const std::string at = "line " + std::to_string(number) + " (\"" + line.substr(0, 60) + "\")";
-    if (keyword == "v") {
-      if (rest.size() < 3 || rest.size() > 7) throw InputError(path, field, at + ": expected a vertex \"v x y z\"");
-      for (const std::string& t : rest)
-        if (!IsObjNumber(t)) throw InputError(path, field, at + ": expected a number, got \"" + t + "\"");
-    } else if (keyword == "f") {
-      if (rest.size() < 3) throw InputError(path, field, at + ": expected a face of at least three vertices");
-      // assimp's triangulation of one polygon is quadratic in its corners (100,000 took 38 s)
-      if (rest.size() > kMaxObjFaceCorners)
-        throw InputError(path, field, at + ": a face of " + std::to_string(rest.size()) + " vertices; expected at most " +
-                                          std::to_string(kMaxObjFaceCorners) + " (triangulate it first)");
-      for (const std::string& t : rest)
-        if (!IsObjCorner(t)) throw InputError(path, field, at + ": expected a vertex index (v, v/vt, v//vn or v/vt/vn), got \"" + t + "\"");
-    }
-  }
-}
-
 }  // namespace
 
 int SignedAxisIndex(const std::string& name) { return ParseSignedAxis(name).index; }
@@ -159,8 +93,7 @@ bool IsAxesPermutation(const std::array<std::string, 3>& axes) {
 TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
   // the file must exist
   if (const std::string problem = NotARegularFile(path); !problem.empty()) throw InputError(path, field, problem);
-  CheckObjLines(path, field);
-  CheckPlyOrOff(path, field);
+  CheckMeshText(path, field);
   // read with assimp: triangles, shared vertices, every node's transform applied
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(

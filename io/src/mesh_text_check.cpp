@@ -1,6 +1,8 @@
 #include "mesh_text_check.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -12,12 +14,22 @@
 namespace dymesh {
 namespace {
 
+// most digits of an OBJ number's integer part (assimp reads it into 64 bits, which overflow past 19)
+constexpr long kMaxObjDigits = 18;
+
+// most corners of one OBJ face
+constexpr std::size_t kMaxObjFaceCorners = 1000;
+
+// most entries a PLY or OFF count may give: elements, and the corners of one face
+constexpr std::uint64_t kMaxCount = UINT64_C(1) << 40, kMaxFaceListCount = UINT64_C(1) << 20;
+
 // one element of a PLY header: its name, count, and the smallest bytes a binary record takes
 struct PlyElement {
   std::string name;
   std::uint64_t count = 0;
   std::uint64_t min_bytes = 0;
-  std::vector<bool> is_list;  // per property
+  int properties = 0;
+  bool starts_with_list = false;  // its first property is a list (a face's vertex indices)
 };
 
 // bytes of a PLY scalar type (0 when unknown)
@@ -54,12 +66,72 @@ bool NextDataLine(std::istream& in, bool skip_comments, long* number, std::strin
   return false;
 }
 
+// "line N ("...")" for messages
+std::string At(long number, const std::string& line) {
+  return "line " + std::to_string(number) + " (\"" + line.substr(0, 60) + "\")";
+}
+
+// an OBJ number token read whole ("0,1" or "1abc" are not numbers; assimp reads their prefix), with at
+// most kMaxObjDigits digits before its point (assimp's reader overflowed a 25-digit integer to 0)
+bool IsObjNumber(const std::string& token) {
+  char* end = nullptr;
+  std::strtod(token.c_str(), &end);
+  const std::string mantissa = token.substr(0, token.find_first_of(".eE"));
+  const auto digits = std::count_if(mantissa.begin(), mantissa.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+  return !token.empty() && end == token.c_str() + token.size() && token.find_first_of("xX") == std::string::npos &&
+         digits <= kMaxObjDigits;
+}
+
+// an OBJ face corner: v, v/vt, v//vn or v/vt/vn, each a (possibly negative) nonzero integer
+bool IsObjCorner(const std::string& token) {
+  std::istringstream parts(token);
+  std::string part;
+  int index = 0;
+  while (std::getline(parts, part, '/')) {
+    const bool may_be_empty = index == 1 && token.find("//") != std::string::npos;
+    char* end = nullptr;
+    const long value = part.empty() ? 0 : std::strtol(part.c_str(), &end, 10);
+    if (!(part.empty() && may_be_empty) && (part.empty() || end != part.c_str() + part.size() || value == 0)) return false;
+    ++index;
+  }
+  return index >= 1 && index <= 3 && token.back() != '/';
+}
+
+// assimp reads a vertex coordinate up to its first bad character and drops a face of fewer than
+// three corners without a word: an OBJ file is read through once first, so that such a line is
+// refused with its number
+void CheckObjLines(const std::string& path, const std::string& field) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (long number = 1; std::getline(in, line); ++number) {
+    std::istringstream tokens(line);
+    std::string keyword, token;
+    tokens >> keyword;
+    std::vector<std::string> rest;
+    while (tokens >> token) rest.push_back(token);
+    const std::string at = At(number, line);
+    if (keyword == "v") {
+      if (rest.size() < 3 || rest.size() > 7) throw InputError(path, field, at + ": expected a vertex \"v x y z\"");
+      for (const std::string& t : rest)
+        if (!IsObjNumber(t)) throw InputError(path, field, at + ": expected a number, got \"" + t + "\"");
+    } else if (keyword == "f") {
+      if (rest.size() < 3) throw InputError(path, field, at + ": expected a face of at least three vertices");
+      // assimp's triangulation of one polygon is quadratic in its corners (100,000 took 38 s)
+      if (rest.size() > kMaxObjFaceCorners)
+        throw InputError(path, field, at + ": a face of " + std::to_string(rest.size()) + " vertices; expected at most " +
+                                          std::to_string(kMaxObjFaceCorners) + " (triangulate it first)");
+      for (const std::string& t : rest)
+        if (!IsObjCorner(t)) throw InputError(path, field, at + ": expected a vertex index (v, v/vt, v//vn or v/vt/vn), got \"" + t + "\"");
+    }
+  }
+}
+
 // one face line: "n i1 .. in" with n >= 3 and every index below the vertex count
 std::string FaceProblem(const std::string& line, std::uint64_t vertices) {
   std::istringstream tokens(line);
   std::string token;
   tokens >> token;
-  if (!IndexBelow(token, 1u << 20) || std::stoull(token) < 3) return "expected a face of at least three vertices";
+  if (!IndexBelow(token, kMaxFaceListCount) || std::stoull(token) < 3) return "expected a face of at least three vertices";
   const std::uint64_t corners = std::stoull(token);
   for (std::uint64_t i = 0; i < corners; ++i) {
     if (!(tokens >> token)) return "expected " + std::to_string(corners) + " vertex indices";
@@ -69,10 +141,6 @@ std::string FaceProblem(const std::string& line, std::uint64_t vertices) {
   return "";
 }
 
-// " at line N ("...")" for messages
-std::string At(long number, const std::string& line) {
-  return "line " + std::to_string(number) + " (\"" + line.substr(0, 60) + "\")";
-}
 
 void CheckPly(const std::string& path, const std::string& field) {
   std::ifstream in(path, std::ios::binary);
@@ -91,7 +159,7 @@ void CheckPly(const std::string& path, const std::string& field) {
       PlyElement e;
       std::string count;
       tokens >> e.name >> count;
-      if (!IndexBelow(count, UINT64_C(1) << 40)) throw InputError(path, field, At(number, line) + ": expected an element count");
+      if (!IndexBelow(count, kMaxCount)) throw InputError(path, field, At(number, line) + ": expected an element count");
       e.count = std::stoull(count);
       elements.push_back(e);
     }
@@ -100,8 +168,8 @@ void CheckPly(const std::string& path, const std::string& field) {
       tokens >> type;
       const bool list = type == "list";
       if (list) tokens >> type;  // the count's type: a list takes at least its count
+      if (elements.back().properties++ == 0) elements.back().starts_with_list = list;
       elements.back().min_bytes += PlyTypeBytes(type);
-      elements.back().is_list.push_back(list);
     }
   }
   if (line.rfind("end_header", 0) != 0) throw InputError(path, field, "PLY header has no end_header");
@@ -118,13 +186,13 @@ void CheckPly(const std::string& path, const std::string& field) {
                                         std::to_string(left));
     return;
   }
-  // ASCII: every counted line is there, faces name existing vertices
+  // ASCII: every counted line is there, faces (led by their index list) name existing vertices
   for (const PlyElement& e : elements)
     for (std::uint64_t i = 0; i < e.count; ++i) {
       if (!NextDataLine(in, false, &number, &line))
         throw InputError(path, field, "PLY header counts " + std::to_string(e.count) + " " + e.name + " lines; the file ends after " +
                                           std::to_string(i));
-      if (e.name != "face") continue;
+      if (e.name != "face" || !e.starts_with_list) continue;
       if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
         throw InputError(path, field, At(number, line) + ": " + problem);
     }
@@ -145,7 +213,7 @@ void CheckOff(const std::string& path, const std::string& field) {
     std::istringstream counts(line);
     counts >> v >> f;
   }
-  if (!IndexBelow(v, UINT64_C(1) << 40) || !IndexBelow(f, UINT64_C(1) << 40))
+  if (!IndexBelow(v, kMaxCount) || !IndexBelow(f, kMaxCount))
     throw InputError(path, field, At(number, line) + ": expected the vertex and face counts");
   const std::uint64_t vertices = std::stoull(v), faces = std::stoull(f);
   for (std::uint64_t i = 0; i < vertices + faces; ++i) {
@@ -160,8 +228,9 @@ void CheckOff(const std::string& path, const std::string& field) {
 
 }  // namespace
 
-void CheckPlyOrOff(const std::string& path, const std::string& field) {
+void CheckMeshText(const std::string& path, const std::string& field) {
   const std::string extension = Lower(std::filesystem::path(path).extension().string());
+  if (extension == ".obj") CheckObjLines(path, field);
   if (extension == ".ply") CheckPly(path, field);
   if (extension == ".off") CheckOff(path, field);
 }

@@ -1,13 +1,14 @@
 #pragma once
 #include <string>
 
-/// Reads a PLY or OFF file through once before assimp sees it: assimp aborts or crashes on counts its
-/// data does not hold and on face indices past the vertices, and reserves what a header claims.
+/// Reads an OBJ, PLY or OFF file through once before assimp sees it: assimp reads a bad OBJ number's
+/// prefix and drops short faces without a word, aborts or crashes on PLY/OFF counts its data does not
+/// hold and on face indices past the vertices, and reserves what a header claims.
 namespace dymesh {
 
-/// Refuses (InputError naming the file, the field and the line) a PLY or OFF file whose header
-/// counts its data cannot hold, or whose faces (ASCII) have fewer than three corners or a corner
-/// outside the vertices. Other extensions are left alone.
-void CheckPlyOrOff(const std::string& path, const std::string& field);
+/// Refuses (InputError naming the file, the field and the line) an OBJ line that is not a whole
+/// vertex or face, and a PLY or OFF file whose header counts its data cannot hold or whose faces
+/// (ASCII) have fewer than three corners or a corner outside the vertices. Other extensions are left alone.
+void CheckMeshText(const std::string& path, const std::string& field);
 
 }  // namespace dymesh

@@ -265,6 +265,10 @@ TEST(MeshFiles, PlyAndOffWhoseCountsOrIndicesAreWrongAreRefused) {
   EXPECT_NE(LoadProblem(dir, "minus.ply", ply + "3 -1 0 1\n").find("vertex index \"-1\""), std::string::npos);
   EXPECT_NE(LoadProblem(dir, "none.ply", ply + "0\n").find("at least three vertices"), std::string::npos);
   EXPECT_NE(LoadProblem(dir, "short.ply", ply).find("the file ends after 0"), std::string::npos);
+  // a face element led by another property than its index list is counted, not read as a face
+  std::string flagged = ply;
+  flagged.replace(flagged.find("property list"), 0, "property uchar flags\n");
+  EXPECT_EQ(LoadProblem(dir, "flagged.ply", flagged + "7 3 0 1 2\n"), "");
   std::string lying = ply;
   lying.replace(lying.find("vertex 3"), 8, "vertex 1000000000");
   EXPECT_NE(LoadProblem(dir, "lying.ply", lying + "3 0 1 2\n").find("counts 1000000000 vertex lines"), std::string::npos);
