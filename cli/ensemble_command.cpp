@@ -90,6 +90,12 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
     return kExitInterrupted;
   }
   out << "outputs in " << request.out_dir << ": samples.jsonl, ensemble.json, report.html\n";
+  // statistics of no sample are no result: say so in the exit code
+  if (c.failed == c.total) {
+    err << "warning: no sample reached the statistics (every one failed or was voided by a warning; see "
+           "status_counts and voided_by_warning in ensemble.json): ensemble.json holds no outputs\n";
+    return kExitWarnings;
+  }
   return kExitOk;
 }
 

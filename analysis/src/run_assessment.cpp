@@ -55,6 +55,30 @@ bool AtRestInContact(const Simulation& sim) {
   return TotalLoad(h.back()) <= TotalLoad(h[h.size() - 1 - window]) * (1.0 + 1e-9);
 }
 
+// kinetic energy of the bodies' motion relative to each other at the first recorded step [J]: in the
+// free bodies' centre-of-mass frame, or the ground's when a body is fixed (the most a collision can absorb)
+double RelativeKineticEnergyBefore(const Simulation& sim) {
+  const ContactEngine& engine = sim.engine();
+  const Sample& first = sim.history().front();
+  double mass = 0.0;
+  Vec3 momentum(0, 0, 0);
+  bool any_fixed = false;
+  for (int i = 0; i < engine.body_count(); ++i) {
+    if (sim.scenario().bodies[i].motion == MotionModel::kFixed) { any_fixed = true; continue; }
+    mass += engine.model(i).mass;
+    momentum += engine.model(i).mass * first.bodies[i].rigid.velocity;
+  }
+  const Vec3 frame_velocity = any_fixed || !(mass > 0.0) ? Vec3(0, 0, 0) : Vec3(momentum / mass);
+  double energy = 0.0;
+  for (int i = 0; i < engine.body_count(); ++i) {
+    if (sim.scenario().bodies[i].motion == MotionModel::kFixed) continue;
+    RigidState relative = first.bodies[i].rigid;
+    relative.velocity -= frame_velocity;
+    energy += KineticEnergy(engine.model(i), relative);
+  }
+  return energy;
+}
+
 RunStatus StatusOf(const Simulation& sim, const Summary& summary) {
   if (sim.failed_numerics() || !SummaryFinite(summary)) return RunStatus::kFailedNumerics;
   if (!sim.finished()) return RunStatus::kInterrupted;
@@ -80,6 +104,15 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
     w->push_back({"energy_balance", "",
                   Text("energy balance error %.2f %% exceeds %.0f %%: kinetic energy lost and contact work disagree",
                        100.0 * s.energy_balance_error, 100.0 * kEnergyBalanceTolerance)});
+  // contact that gave back more energy than it absorbed: restitution above 1 (a law too stiff for the step)
+  const double absorbed = s.crush_energy + s.friction_energy;
+  const double available = RelativeKineticEnergyBefore(sim);
+  if (absorbed < -kEnergyCreatedTolerance * available)
+    w->push_back({"energy_created", "",
+                  Text("the contact returned %.3g J more than it absorbed (%.0f %% of the %.3g J of relative motion "
+                       "before it): a restitution above 1, not physical; the crush law is too stiff for the time "
+                       "step (check C3, D3 and Kv) or the masses are wrong",
+                       -absorbed, -100.0 * absorbed / available, available)});
   const TimeStepGuide& g = sim.time_step_guide();
   if (g.bounded && sc.time_step > g.recommended_step)
     w->push_back({"time_step_coarse", "time.step",
@@ -115,7 +148,8 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
 }  // namespace
 
 bool WarningVoidsResults(std::string_view code) {
-  return code == "passed_through" || code == "crush_beyond_length" || code == "energy_balance";
+  return code == "passed_through" || code == "crush_beyond_length" || code == "energy_balance" ||
+         code == "energy_created";
 }
 
 RunAssessment AssessRun(const Simulation& sim, const Summary& summary) {

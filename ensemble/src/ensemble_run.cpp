@@ -64,6 +64,18 @@ void ReadRecords(const Spec& spec, const fs::path& file, std::map<int, SampleRec
   }
 }
 
+// a folder holding a sample outside the shard is another shard's or the whole ensemble's: finishing
+// this shard there would rewrite its samples.jsonl with this shard's records only
+void RefuseOtherShards(const RunOptions& options, const std::map<int, SampleRecord>& records) {
+  for (const auto& [index, r] : records)
+    if (index % options.shards != options.shard - 1)
+      throw InputError(options.out_dir, "--shard",
+                       "the folder holds sample " + std::to_string(index) + ", which is not in shard " +
+                           std::to_string(options.shard) + "/" + std::to_string(options.shards) +
+                           " (another shard's or the whole ensemble's results): give each shard its own --out, "
+                           "then merge");
+}
+
 // appends one line with a single write (O_APPEND): a killed run never leaves half a record between two
 class Journal {
  public:
@@ -129,6 +141,7 @@ class Collector {
     ReadRecords(spec, dir_ / kJournalName, &records_);
     // a sample that ran over the time limit runs again (the limit is the machine's, not the spec's)
     for (auto it = records_.begin(); it != records_.end();) it = it->second.status == kTimedOut ? records_.erase(it) : std::next(it);
+    RefuseOtherShards(options, records_);
     for (int i = options.shard - 1; i < spec.samples; i += options.shards) {
       ++counts_.total;
       if (records_.count(i)) ++counts_.resumed;

@@ -115,6 +115,16 @@ TEST_F(Ensemble, ThreeShardsMergedEqualOneRun) {
   const ProcessResult absent = Dymesh({"ensemble", "merge", spec, "--out", (dir_ / "m3").string(), merge[5], merge[6], merge[7], typo});
   EXPECT_EQ(absent.exit_code, 2);
   EXPECT_NE(absent.err.find(typo + ": samples.jsonl: missing"), std::string::npos) << absent.err;
+  // a shard run into the whole ensemble's folder (or another shard's) is refused and changes nothing:
+  // finishing there would have rewritten samples.jsonl with the shard's records only
+  const std::string whole_samples = ReadFile(dir_ / "whole" / "samples.jsonl");
+  const ProcessResult into_whole =
+      Dymesh({"ensemble", spec, "--quiet", "--shard", "1/3", "--out", (dir_ / "whole").string()});
+  EXPECT_EQ(into_whole.exit_code, 2);
+  EXPECT_NE(into_whole.err.find("--shard: the folder holds sample 1, which is not in shard 1/3"), std::string::npos)
+      << into_whole.err;
+  EXPECT_EQ(ReadFile(dir_ / "whole" / "samples.jsonl"), whole_samples);
+  EXPECT_EQ(Dymesh({"ensemble", spec, "--quiet", "--shard", "2/3", "--out", merge[5]}).exit_code, 2);
 }
 
 #ifdef DYMESH_MPIEXEC
@@ -137,13 +147,15 @@ TEST_F(Ensemble, StopToleranceAcrossMpiRanksEndsWhereThreadsDo) {
 
 TEST_F(Ensemble, SamplesOverTheTimeLimitAreRecordedAndRunAgainOnResume) {
   // a limit no sample can meet: every sample is a timed_out record (counted, excluded, the ensemble
-  // goes on); the same command without the limit then runs them again, to a fresh run's bytes
+  // goes on; with none in the statistics it exits 3 and says so); the same command without the limit
+  // then runs them again, to a fresh run's bytes
   const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 4);
   ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "fresh").string()}).exit_code, 0);
   const fs::path out = dir_ / "limited";
   const ProcessResult limited = Dymesh({"ensemble", spec, "--quiet", "--sample-time-limit", "1e-6", "--out", out.string()});
-  ASSERT_EQ(limited.exit_code, 0) << limited.err;
+  ASSERT_EQ(limited.exit_code, 3) << limited.err;
   EXPECT_NE(limited.out.find("4 failed"), std::string::npos) << limited.out;
+  EXPECT_NE(limited.err.find("no sample reached the statistics"), std::string::npos) << limited.err;
   const std::string first = Line(out / "samples.jsonl", 0);
   EXPECT_NE(first.find("\"status\":\"timed_out\""), std::string::npos) << first;
   EXPECT_NE(first.find("ran over the sample time limit of 1e-06 s (wall clock)"), std::string::npos) << first;

@@ -3,7 +3,10 @@
 // valid JSON numbers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "dymesh/io/summary_json.h"
 #include "dymesh/io/body_models.h"
@@ -73,6 +76,37 @@ TEST(RunAssessment, CrushDeeperThanTheBodyIsLongIsWarned) {
   bool warned = false;
   for (const RunWarning& w : summary.warnings) warned = warned || (w.code == "crush_beyond_length" && w.field == "bodies[0]");
   EXPECT_TRUE(warned);
+}
+
+// the codes of a run's warnings
+std::vector<std::string> CodesOf(const Summary& summary) {
+  std::vector<std::string> codes;
+  for (const RunWarning& w : summary.warnings) codes.push_back(w.code);
+  return codes;
+}
+
+TEST(RunAssessment, ContactThatCreatesEnergyIsWarnedAndVoidsTheResults) {
+  // the barrier box with a quadratic term C = 1e5 lb/in^4 (a fuzzed input): the pressure jumps far
+  // within one step, the rebound returns more than the loading took, and the box leaves faster than
+  // it came (restitution above 1). The ledger still closes, so only the sign of the contact work
+  // (crush + friction, never negative when restitution is at most 1) can tell.
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  for (Stiffness& k : s.bodies[0].stiffness) k.C = 1e5 * units::PoundPerInchPow(4);
+  Simulation sim(s, BuildBodyModels(s), accel::MakeBruteForceLocatorFactory());
+  sim.Run();
+  const Summary summary = Summarize(sim);
+  ASSERT_GT(summary.kinetic_after, 1.01 * summary.kinetic_before);  // the case creates energy
+  const std::vector<std::string> codes = CodesOf(summary);
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), "energy_created"), 1) << ::testing::PrintToString(codes);
+  EXPECT_TRUE(WarningVoidsResults("energy_created"));
+  // the same box without C keeps its energy account clean: restitution 0.1, no such warning
+  Scenario plain = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  Simulation plain_sim(plain, BuildBodyModels(plain), accel::MakeBruteForceLocatorFactory());
+  plain_sim.Run();
+  const Summary plain_summary = Summarize(plain_sim);
+  EXPECT_GT(plain_summary.crush_energy, 0.0);
+  const std::vector<std::string> plain_codes = CodesOf(plain_summary);
+  EXPECT_EQ(std::count(plain_codes.begin(), plain_codes.end(), "energy_created"), 0);
 }
 
 }  // namespace

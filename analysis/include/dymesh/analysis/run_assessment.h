@@ -14,6 +14,11 @@ struct Summary;
 /// validation case, so 1 % is far above numerical noise and far below a physically wrong run.
 inline constexpr double kEnergyBalanceTolerance = 0.01;
 
+/// Net contact work (crush + friction, the ledger) below -1 % of the relative kinetic energy before the
+/// collision means the contact created energy: with restitution at most 1 the crush work is never
+/// negative, and friction work never is; 1 % is far above the ledger's round-off, like the balance's.
+inline constexpr double kEnergyCreatedTolerance = 0.01;
+
 /// Separation speed along the impulse, as a fraction of the closing speed, below which the bodies
 /// passed through each other: contact that stops them leaves them receding (a positive fraction, the
 /// restitution), or on eccentric and yawing impacts a CG-based speed a little below zero (the demos:
@@ -22,7 +27,7 @@ inline constexpr double kEnergyBalanceTolerance = 0.01;
 inline constexpr double kPassThroughSeparation = -0.5;
 
 /// Whether a run warning says a complete run's delta-V, crush and energies are not physical
-/// (passed_through, crush_beyond_length, energy_balance): an ensemble counts such a sample as failed
+/// (passed_through, crush_beyond_length, energy_balance, energy_created): an ensemble counts such a sample as failed
 /// and leaves it out of its statistics.
 bool WarningVoidsResults(std::string_view code);
 
