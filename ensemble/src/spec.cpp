@@ -67,6 +67,15 @@ std::string ReadText(const std::string& path, const std::string& spec_file, cons
   return text.str();
 }
 
+// the contents of the files a scenario reads besides itself: each body's vehicle file and mesh file
+std::string FilesReadBy(const Scenario& scenario, const std::string& spec_file) {
+  std::string contents;
+  for (std::size_t i = 0; i < scenario.bodies.size(); ++i)
+    for (const std::string& file : {scenario.bodies[i].vehicle_file, scenario.bodies[i].mesh.file})
+      if (!file.empty()) contents += "\n" + ReadText(file, spec_file, "scenario (bodies[" + std::to_string(i) + "])");
+  return contents;
+}
+
 // bodies[0].initial.speed -> /bodies/0/initial/speed: keys joined by '.', each followed by any
 // number of [index] (digits); nothing else
 std::string PointerOf(const Reader& r, const std::string& path, const std::string& field) {
@@ -481,8 +490,9 @@ Spec LoadSpec(const std::string& path) {
     spec.samples = spec.base_samples * (static_cast<int>(spec.inputs.size()) + 2);
   }
   TrySampleScenarios(r, spec);
-  // the hash covers what the samples depend on: the spec itself and the base scenario's text
-  spec.hash = TextHash(j.dump() + "\n" + spec.scenario_text);
+  // the hash covers what the samples depend on: the spec itself, the base scenario's text and the
+  // contents of the vehicle and mesh files it reads (a resume after one was edited is refused)
+  spec.hash = TextHash(j.dump() + "\n" + spec.scenario_text + FilesReadBy(base_scenario, path));
   return spec;
 }
 

@@ -746,8 +746,8 @@ BodyFields Merge(const BodyFields& base, const BodyFields& over) {
   return m;
 }
 
-// a vehicle definition file: its own units, its own paths, errors name it
-BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string& path) {
+// a vehicle definition file: its own units, its own paths, errors name it; `file` gets its absolute path
+BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string& path, std::string* file_read) {
   const std::string name = ReadString(scenario, j, path);
   if (!IsFileName(name))
     Fail(scenario, path, "expected a vehicle file name (no NUL character), got " + Describe(j));
@@ -757,6 +757,7 @@ BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string&
   bool ok = false;
   const std::string text = ReadTextFile(file, &ok);
   if (!ok) Fail(scenario, path, "cannot open vehicle file: " + file);
+  *file_read = file;
   try {
     const Json root = ParseJson(text, file);
     Source src{file, fs::path(file).parent_path(), {}, scenario.warnings};
@@ -846,7 +847,7 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
          "expected a name usable in file names (no /, \\ or control characters), got " + Describe(j["name"]));
   // vehicle file first, then this body's own fields
   BodyFields fields;
-  if (const Json* v = Find(j, "vehicle")) fields = LoadVehicle(src, *v, Join(path, "vehicle"));
+  if (const Json* v = Find(j, "vehicle")) fields = LoadVehicle(src, *v, Join(path, "vehicle"), &body.vehicle_file);
   fields = Merge(fields, ParseBodyFields(src, j, path));
   body.initial = ParseInitial(src, Require(src, j, path, "initial"), Join(path, "initial"));
   // geometry is required

@@ -47,6 +47,7 @@ struct MeshSource {
 /// One body as the scenario describes it (SI).
 struct BodySpec {
   std::string name;
+  std::string vehicle_file;         ///< absolute path of the vehicle file it was read from; empty when none
   MeshSource mesh;
   std::optional<Vec3> cg;           ///< [m] CG in the mesh's body-axis coordinates; default: bounds centre
   double mass = 0.0;                ///< [kg]
