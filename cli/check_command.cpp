@@ -91,6 +91,15 @@ int CheckCommand(const std::string& scenario_path, std::ostream& out) {
                   guide.contact_period, models[guide.body_a]->name.c_str(), models[guide.body_b]->name.c_str(),
                   guide.recommended_step, guide.stable_limit,
                   scenario.time_step > guide.recommended_step ? "; warning: the step is coarser than recommended" : "");
+  // the step over which the fastest pair closes by the search reach
+  if (guide.fastest_a >= 0 && scenario.time_step > guide.reach_step) {
+    const OutputUnits u = UnitsOf(scenario.units);
+    out << Format("  warning: \"%s\" and \"%s\" close %.3g %s per step, farther than the contact search reaches "
+                  "(%.3g %s): contact can be missed; use a step <= %.3g s\n",
+                  models[guide.fastest_a]->name.c_str(), models[guide.fastest_b]->name.c_str(),
+                  guide.relative_speed * scenario.time_step * u.length, u.length_name,
+                  scenario.contact.toofar_maximum * u.length, u.length_name, guide.reach_step);
+  }
   // deformable bodies coarser than kCoarseEdge: noted when there are two or more
   std::vector<double> coarse(models.size(), 0.0);
   for (std::size_t i = 0; i < models.size(); ++i)

@@ -121,6 +121,13 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                        sc.time_step, g.contact_period, sc.bodies[g.body_a].name.c_str(),
                        sc.bodies[g.body_b].name.c_str(), g.contact_period / sc.time_step, kMinStepsPerContact,
                        g.recommended_step)});
+  if (g.fastest_a >= 0 && sc.time_step > g.reach_step)
+    w->push_back({"step_beyond_search_reach", "time.step",
+                  Text("\"%s\" and \"%s\" close %.3g m per step at their initial relative speed, farther than the "
+                       "contact search reaches (contact.toofar_maximum %.3g m): a node can cross a surface in one "
+                       "step unseen and the contact be missed; use at most %.3g s",
+                       sc.bodies[g.fastest_a].name.c_str(), sc.bodies[g.fastest_b].name.c_str(),
+                       g.relative_speed * sc.time_step, sc.contact.toofar_maximum, g.reach_step)});
   // crush deeper than the body is long (x extent): the mesh was pushed through itself
   for (int i = 0; i < sim.engine().body_count(); ++i) {
     const MeshStats m = ComputeStats(sim.engine().model(i).mesh);
@@ -131,9 +138,11 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          "through itself; the crush law or the stiffness does not fit this body",
                          s.bodies[i].name.c_str(), s.bodies[i].max_crush, length)});
   }
-  // a pair's contact that left it closing along its impulse at over half its closing speed
+  // a pair's contact that left it closing along its impulse at over half its closing speed, once the
+  // run is over (still in contact, or stopped early, the bodies may yet be stopped: the status says so)
   for (const PairSummary& p : s.pairs)
-    if (p.closing_speed > 0.0 && p.separation_speed < kPassThroughSeparation * p.closing_speed)
+    if (status == RunStatus::kComplete && p.closing_speed > 0.0 &&
+        p.separation_speed < kPassThroughSeparation * p.closing_speed)
       w->push_back({"passed_through", "",
                     Text("\"%s\" and \"%s\" still closed at %.0f %% of their closing speed when the run ended: "
                          "they passed through each other instead of crushing (coarse meshes whose faces meet "

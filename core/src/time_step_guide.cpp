@@ -39,6 +39,21 @@ double InverseMass(const Scenario& scenario, const BodyModel& model, int i) {
   return scenario.bodies[i].motion == MotionModel::kFixed ? 0.0 : 1.0 / model.mass;
 }
 
+// the fastest pair that can carry a load, and the step over which it closes by the search reach
+void SetReachStep(const Scenario& scenario, const std::vector<std::shared_ptr<const BodyModel>>& models,
+                  TimeStepGuide* guide) {
+  for (int a = 0; a < static_cast<int>(models.size()); ++a)
+    for (int b = a + 1; b < static_cast<int>(models.size()); ++b) {
+      if (models[a]->rigid && models[b]->rigid) continue;
+      const double speed = (scenario.bodies[a].initial.velocity - scenario.bodies[b].initial.velocity).norm();
+      if (!(speed > guide->relative_speed)) continue;
+      guide->fastest_a = a;
+      guide->fastest_b = b;
+      guide->relative_speed = speed;
+      guide->reach_step = scenario.contact.toofar_maximum / speed;
+    }
+}
+
 }  // namespace
 
 TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::shared_ptr<const BodyModel>>& models) {
@@ -64,6 +79,7 @@ TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::sha
       guide = TimeStepGuide{true, a, b, k, 1.0 / inverse_mass, kPi / omega, kPi / omega / kMinStepsPerContact,
                             2.0 / omega};
     }
+  SetReachStep(scenario, models, &guide);
   return guide;
 }
 

@@ -109,5 +109,45 @@ TEST(RunAssessment, ContactThatCreatesEnergyIsWarnedAndVoidsTheResults) {
   EXPECT_EQ(std::count(plain_codes.begin(), plain_codes.end(), "energy_created"), 0);
 }
 
+TEST(RunAssessment, ARunCutShortInContactIsNotCalledAPassThrough) {
+  // the barrier box stopped 0.01 s in, still crushing at ~29 of its 30 mph: ended in contact, which
+  // says the result is not final; its speed toward the wall is not a pass-through
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  s.duration = 0.01;
+  Simulation sim(s, BuildBodyModels(s), accel::MakeBruteForceLocatorFactory());
+  sim.Run();
+  const Summary summary = Summarize(sim);
+  EXPECT_EQ(summary.status, RunStatus::kEndedInContact);
+  ASSERT_EQ(summary.pairs.size(), 1u);
+  ASSERT_LT(summary.pairs[0].separation_speed, kPassThroughSeparation * summary.pairs[0].closing_speed);  // still closing
+  const std::vector<std::string> codes = CodesOf(summary);
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), "passed_through"), 0) << ::testing::PrintToString(codes);
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), "ran_to_duration"), 1);
+}
+
+TEST(RunAssessment, AStepThatJumpsPastTheSearchReachIsWarned) {
+  // the barrier box at 760 mph closes 6.69 in per 0.0005 s step: its front nodes land 6.2 in inside
+  // the wall on the first step, past the 6 in the contact search reaches (TOOFAR_MAXIMUM), and the
+  // contact is never found. "never touched" alone would mislead; the step is named with its limit,
+  // toofar_maximum / relative speed = 6 in / 760 mph
+  Scenario s = testing::BarrierScenario(760.0, 0.1, 0.0005);
+  s.duration = 0.02;
+  Simulation sim(s, BuildBodyModels(s), accel::MakeBruteForceLocatorFactory());
+  EXPECT_NEAR(sim.time_step_guide().reach_step, 6.0 * units::kInch / (760.0 * units::kMph), 1e-15);
+  sim.Run();
+  const Summary summary = Summarize(sim);
+  const std::vector<std::string> codes = CodesOf(summary);
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), "step_beyond_search_reach"), 1) << ::testing::PrintToString(codes);
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), "no_contact"), 1);
+  // within the reach (600 mph: 5.28 in per step) the contact is found and the step not warned
+  Scenario within = testing::BarrierScenario(600.0, 0.1, 0.0005);
+  within.duration = 0.02;
+  Simulation within_sim(within, BuildBodyModels(within), accel::MakeBruteForceLocatorFactory());
+  within_sim.Run();
+  const std::vector<std::string> within_codes = CodesOf(Summarize(within_sim));
+  EXPECT_EQ(std::count(within_codes.begin(), within_codes.end(), "step_beyond_search_reach"), 0);
+  EXPECT_EQ(std::count(within_codes.begin(), within_codes.end(), "no_contact"), 0);
+}
+
 }  // namespace
 }  // namespace dymesh

@@ -21,12 +21,19 @@ struct TimeStepGuide {
   double contact_period = 0.0;    ///< [s] pi / omega: loading and unloading of a linear contact
   double recommended_step = 0.0;  ///< [s] contact_period / kMinStepsPerContact
   double stable_limit = 0.0;      ///< [s] 2 / omega: the semi-implicit host diverges beyond it
+  /// The fastest pair (largest initial relative speed of the CGs; -1 when none moves) and the longest
+  /// step [s] over which it closes no farther than the contact search reaches (TOOFAR_MAXIMUM): past
+  /// it, a node can cross a surface in one step unseen and the contact be missed.
+  int fastest_a = -1, fastest_b = -1;
+  double relative_speed = 0.0;    ///< [m/s] of the fastest pair
+  double reach_step = 0.0;        ///< [s] contact.toofar_maximum / relative_speed
 };
 
 /// Estimates, for every pair of bodies that can meet, a linear contact stiffness (the stiffer of the
 /// loading slope B and the unloading slope Kv over a body's surfaces, times the smaller projected
 /// bounds area across the closing direction, the two bodies in series) and the pair's reduced mass,
 /// and returns the shortest period. An upper bound on the stiffness: real contact areas are smaller.
+/// Also the step the search reach allows the fastest pair (pairs of two rigid bodies left out).
 TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::shared_ptr<const BodyModel>>& models);
 
 /// Throws InputError at time.step when the scenario's step is beyond the guide's stable limit,
