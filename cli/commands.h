@@ -36,7 +36,7 @@ struct EnsembleRequest {
   std::string out_dir = "ensemble";
   int threads = 0;     ///< worker threads (0: all cores)
   int samples = 0;     ///< 0: the spec's own count
-  std::string shard;   ///< "K/N": run every N-th sample from the K-th (1-based); empty: all
+  std::string shard = "1/1";  ///< "K/N": run every N-th sample from the K-th (1-based)
   double sample_time_limit = 0.0;  ///< [s] wall clock per sample (0: none)
   bool quiet = false;
 };

@@ -29,7 +29,6 @@ namespace {
 
 // "K/N" with 1 <= K <= N
 void ParseShard(const std::string& text, int* shard, int* shards) {
-  if (text.empty()) return;
   int k = 0, n = 0;
   char slash = 0;
   std::istringstream in(text);

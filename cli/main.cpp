@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   CLI::App* run = app.add_subcommand(
       "run", "simulate a scenario; write summary.json, history.csv, report.html and meshes (OBJ, PLY)");
   run->add_option("scenario", request.scenario_path, "scenario JSON file")->required();
-  run->add_option("--out", request.out_dir, "output folder (created if missing)");
+  run->add_option("--out", request.out_dir, "output folder (created if missing; default: out)");
   run->add_flag("-q,--quiet", request.quiet, "print nothing but errors (no progress, no summary)");
   run->add_option("--locator", request.locator, "search: embree (default), neighbor_box (DyMESH's), brute_force")
       ->check(CLI::IsMember({"embree", "neighbor_box", "brute_force"}));
@@ -104,10 +104,10 @@ int main(int argc, char** argv) {
   dymesh::cli::EnsembleRequest ens;
   CLI::App* ensemble = app.add_subcommand("ensemble", "run a Monte Carlo spec: samples.jsonl and ensemble.json (resumable)");
   ensemble->add_option("spec", ens.spec_path, "ensemble spec JSON file");
-  ensemble->add_option("--out", ens.out_dir, "output folder (a re-run resumes it)");
+  ensemble->add_option("--out", ens.out_dir, "output folder (a re-run resumes it; default: ensemble)");
   ensemble->add_option("--threads", ens.threads, "worker threads (default: all cores); results are identical")->check(kThreadCount);
   ensemble->add_option("--samples", ens.samples, "number of samples (default: the spec's)")->check(CLI::Range(1, 10000000));
-  ensemble->add_option("--shard", ens.shard, "K/N: run every N-th sample from the K-th (Slurm arrays, GNU parallel)");
+  ensemble->add_option("--shard", ens.shard, "K/N: run every N-th sample from the K-th (Slurm arrays, GNU parallel; default: 1/1)");
   ensemble->add_option("--sample-time-limit", ens.sample_time_limit,
                        "seconds (wall clock) a sample may run; over it the sample is recorded as timed_out and a resume runs it again")
       ->check(CLI::Validator(
@@ -126,15 +126,24 @@ int main(int argc, char** argv) {
   CLI::App* replay = ensemble->add_subcommand("replay", "re-run one sample with the full single-run outputs");
   replay->add_option("spec", replay_spec, "ensemble spec JSON file")->required();
   replay->add_option("--index", replay_index, "sample index")->required();
-  replay->add_option("--out", replay_out, "output folder");
-  replay->add_option("--samples", ens.samples, "number of samples, if the ensemble was run with --samples");
+  replay->add_option("--out", replay_out, "output folder (default: replay)");
+  replay->add_option("--samples", ens.samples, "number of samples, if the ensemble was run with --samples")
+      ->check(CLI::Range(1, 10000000));
   CLI::App* merge = ensemble->add_subcommand("merge", "join shard folders into one ensemble");
   merge->add_option("spec", merge_spec, "ensemble spec JSON file")->required();
   merge->add_option("shards", merge_shards, "shard output folders")->required();
-  merge->add_option("--out", merge_out, "output folder");
-  merge->add_option("--samples", ens.samples, "number of samples, if the shards were run with --samples");
+  merge->add_option("--out", merge_out, "output folder (default: ensemble)");
+  merge->add_option("--samples", ens.samples, "number of samples, if the shards were run with --samples")
+      ->check(CLI::Range(1, 10000000));
 
-  // command-line mistakes: one human line and exit 2 (help and version exit 0)
+  // command-line mistakes: one human line and exit 2 (help and version exit 0); a mistyped command
+  // is named (CLI11 takes it for a stray argument and asks for a command)
+  const std::string first = argc > 1 ? argv[1] : "-";
+  if (first[0] != '-' && first != "run" && first != "check" && first != "bench" && first != "ensemble") {
+    std::fprintf(stderr, "error: unknown command \"%s\": expected run, check, bench or ensemble\n"
+                         "run 'dymesh --help' for the commands\n", argv[1]);
+    return dymesh::cli::kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

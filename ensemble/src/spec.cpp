@@ -223,7 +223,7 @@ Input ParseInput(const Reader& r, const Json& j, const Json& scenario, const std
 
 // "crash3": [{name, body, surface, width, weight (US, lb) | mass (SI, kg), b0, b1}]: two inputs and
 // the preset that turns them into the surface's A and B
-void ParseCrash3(const Reader& r, const Json& list, const Json& scenario, Spec* spec) {
+void ParseCrash3(const Reader& r, const Json& list, const Json& scenario, const Scenario& base, Spec* spec) {
   if (!list.is_array()) r.Fail("crash3", "expected an array of presets");
   const bool us = scenario.value("units", "US") == "US";
   for (std::size_t i = 0; i < list.size(); ++i) {
@@ -240,9 +240,22 @@ void ParseCrash3(const Reader& r, const Json& list, const Json& scenario, Spec* 
     const std::string s = surface.is_string() ? surface.get<std::string>() : "";
     if (s != "front" && s != "right" && s != "back" && s != "left" && s != "top" && s != "bottom")
       r.Fail(at + ".surface", "expected front, right, back, left, top or bottom");
+    if (base.bodies[static_cast<std::size_t>(body)].rigid)
+      r.Fail(at + ".body", "body " + std::to_string(static_cast<int>(body)) + " (\"" +
+                               base.bodies[static_cast<std::size_t>(body)].name + "\") is rigid: it takes no crush, so "
+                               "its stiffness is never used");
     Crash3Preset preset;
     preset.us = us;
     preset.pointer = "/bodies/" + std::to_string(static_cast<int>(body)) + "/stiffness/" + s;
+    // one source per surface's coefficients: another preset or an input would be overwritten
+    for (std::size_t k = 0; k < spec->crash3.size(); ++k)
+      if (spec->crash3[k].pointer == preset.pointer)
+        r.Fail(at + ".surface", "bodies[" + std::to_string(static_cast<int>(body)) + "] " + s +
+                                    " is already set by crash3[" + std::to_string(k) + "]");
+    for (std::size_t k = 0; k < spec->inputs.size(); ++k)
+      if (spec->inputs[k].pointer.rfind(preset.pointer + "/", 0) == 0)
+        r.Fail(at + ".surface", "bodies[" + std::to_string(static_cast<int>(body)) + "] " + s + " is also set by inputs[" +
+                                    std::to_string(k) + "] (\"" + spec->inputs[k].path + "\"): give its stiffness one source");
     preset.width = r.Number(r.Require(j, at, "width"), at + ".width");
     const char* mass_key = us ? "weight" : "mass";
     preset.mass = r.Number(r.Require(j, at, mass_key), at + "." + mass_key) * (us ? 0.45359237 : 1.0);
@@ -410,7 +423,7 @@ Spec LoadSpec(const std::string& path) {
   if (!inputs.is_array()) r.Fail("inputs", "expected an array");
   for (std::size_t i = 0; i < inputs.size(); ++i)
     spec.inputs.push_back(ParseInput(r, inputs[i], scenario_json, "inputs[" + std::to_string(i) + "]"));
-  if (j.contains("crash3")) ParseCrash3(r, j["crash3"], scenario_json, &spec);
+  if (j.contains("crash3")) ParseCrash3(r, j["crash3"], scenario_json, base_scenario, &spec);
   for (std::size_t a = 0; a < spec.inputs.size(); ++a)
     for (std::size_t b = 0; b < a; ++b) {
       if (spec.inputs[a].name == spec.inputs[b].name) r.Fail("inputs", "duplicate input name \"" + spec.inputs[a].name + "\"");

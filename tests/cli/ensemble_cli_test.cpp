@@ -423,4 +423,38 @@ TEST_F(Ensemble, BadSpecKeysAndSampleCountsAreRefusedBeforeAnySample) {
   EXPECT_NE(r.err.find("spec.json: --samples: this design has 2 samples; expected at most that, got 3"), std::string::npos) << r.err;
 }
 
+// CRASH3 presets that fuzzing found accepted (2026-11-24): on the rigid wall (stiffness never used), the
+// same surface twice, and a surface an input also sets (one overwrote the other in every sample)
+TEST_F(Ensemble, Crash3PresetsWithNoOrTwoSourcesAreRefused) {
+  const std::string preset = R"({"name": "k", "body": 0, "surface": "front", "width": 66, "weight": 3000,
+    "b0": {"fixed": 5}, "b1": {"fixed": 1.5}})";
+  const std::string on_wall = R"({"name": "w", "body": 1, "surface": "front", "width": 66, "weight": 3000,
+    "b0": {"fixed": 5}, "b1": {"fixed": 1.5}})";
+  const std::string again = R"({"name": "k2", "body": 0, "surface": "front", "width": 66, "weight": 3000,
+    "b0": {"fixed": 5}, "b1": {"fixed": 1.5}})";
+  const std::pair<std::string, std::string> cases[] = {
+      {"[" + on_wall + "]", "crash3[0].body: body 1 (\"wall\") is rigid: it takes no crush"},
+      {"[" + preset + ", " + again + "]", "crash3[1].surface: bodies[0] front is already set by crash3[0]"},
+  };
+  for (const auto& [crash3, message] : cases) {
+    const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 5);
+    nlohmann::json j = nlohmann::json::parse(ReadFile(spec));
+    j["crash3"] = nlohmann::json::parse(crash3);
+    std::ofstream(spec) << j.dump();
+    const ProcessResult r = Dymesh({"ensemble", spec, "--out", (dir_ / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << crash3;
+    EXPECT_NE(r.err.find("spec.json: " + message), std::string::npos) << r.err;
+  }
+  // the box with its own front stiffness, which an input varies while a preset sets it
+  nlohmann::json scenario = nlohmann::json::parse(ReadFile(DYMESH_DATA_DIR "/scenarios/validation/box_barrier_30mph.json"));
+  scenario["bodies"][0]["stiffness"]["front"] = {{"A", 300}, {"B", 100}, {"conversion_height", 30}};
+  const std::string spec = Write("front.json", R"({"scenario": ")" + Write("front_scenario.json", scenario.dump()) +
+      R"(", "samples": 3, "inputs": [{"name": "a", "path": "bodies[0].stiffness.front.A",
+      "distribution": {"uniform": {"low": 250, "high": 350}}}], "crash3": [)" + preset + "]}");
+  const ProcessResult r = Dymesh({"ensemble", spec, "--out", (dir_ / "out").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("front.json: crash3[0].surface: bodies[0] front is also set by inputs[0] "
+                       "(\"bodies[0].stiffness.front.A\"): give its stiffness one source"), std::string::npos) << r.err;
+}
+
 }  // namespace

@@ -524,6 +524,24 @@ TEST_F(Trust, CommandLineMistakesGetOneHumanLine) {
   const ProcessResult missing = Dymesh({"check"});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_TRUE(Has(missing.err, "scenario is required")) << missing.err;
+  // found by fuzzing (2026-11-24): a mistyped command was not named; replay and merge took 0 or
+  // negative sample counts; an empty --shard ran every sample
+  const ProcessResult typo = Dymesh({"ensamble", "spec.json"});
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_TRUE(Has(typo.err, "error: unknown command \"ensamble\": expected run, check, bench or ensemble")) << typo.err;
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"replay", "spec.json", "--index", "0"},
+                                               std::vector<std::string>{"merge", "spec.json", "shard1"}}) {
+    std::vector<std::string> command = {"ensemble"};
+    command.insert(command.end(), args.begin(), args.end());
+    command.insert(command.end(), {"--samples", "0"});
+    const ProcessResult count = Dymesh(command);
+    EXPECT_EQ(count.exit_code, 2) << args[0];
+    EXPECT_TRUE(Has(count.err, "error: --samples: Value 0 not in range 1 to 10000000")) << count.err;
+  }
+  const ProcessResult shard = Dymesh({"ensemble", DYMESH_DATA_DIR "/ensembles/p406_oblique.json", "--shard", "", "--out",
+                                      (dir_ / "shard").string()});
+  EXPECT_EQ(shard.exit_code, 2);
+  EXPECT_TRUE(Has(shard.err, "--shard: expected K/N with 1 <= K <= N, got \"\"")) << shard.err;
 }
 
 }  // namespace

@@ -114,6 +114,13 @@ TEST_F(ScenarioFiles, GoodUsScenarioConverts) {
   EXPECT_EQ(c.passes_per_step, 3);
   EXPECT_EQ(c.search_direction, SearchDirection::kSpecified);
   EXPECT_NEAR((c.specified_direction - Vec3(0, 0.6, 0.8)).norm(), 0.0, 1e-15);
+  // the same direction written at extreme scales (its length overflowed, or underflowed to 0, before)
+  for (const double scale : {1e200, 1e-200}) {
+    Json j = Json::parse(kGoodScenario);
+    j["contact"]["specified_direction"] = Json::array({0.0, 3.0 * scale, 4.0 * scale});
+    EXPECT_NEAR((ParseScenario(j.dump(), ScenarioPath()).contact.specified_direction - Vec3(0, 0.6, 0.8)).norm(), 0.0,
+                1e-15) << scale;
+  }
   EXPECT_EQ(c.stop_rule, StopRule::kBestOfTwo);
   EXPECT_EQ(c.version, 4);
   EXPECT_DOUBLE_EQ(c.null_band, 0.00635);            // 0.25 in
