@@ -21,16 +21,38 @@ namespace fs = std::filesystem;
 [[noreturn]] void Refuse(const std::string& dir, const std::string& why) { throw InputError(dir, "--out", why); }
 
 // the folder exists (created when missing) and is a folder
-void EnsureFolder(const std::string& dir) {
+// creates the folder when missing; returns the outermost folder it created (empty: none)
+std::string EnsureFolder(const std::string& dir) {
   std::error_code ec;
   const fs::file_status status = fs::status(dir, ec);
   if (status.type() == fs::file_type::not_found) {
+    fs::path outermost = fs::absolute(dir, ec).lexically_normal();
+    if (!outermost.has_filename()) outermost = outermost.parent_path();  // a trailing slash
+    while (outermost.has_parent_path() && outermost.parent_path() != outermost &&
+           !fs::exists(outermost.parent_path(), ec))
+      outermost = outermost.parent_path();
     fs::create_directories(dir, ec);
     if (ec) Refuse(dir, "cannot create the output folder: " + ec.message());
-    return;
+    return outermost.string();
   }
   if (ec) Refuse(dir, "cannot inspect the output folder: " + ec.message());
   if (status.type() != fs::file_type::directory) Refuse(dir, "exists and is not a folder: give a folder for --out");
+  return "";
+}
+
+// the folders this run created, when they hold nothing but its lock (refused or stopped before any
+// output), are removed up to the outermost it created: a refusal leaves no folder behind
+void RemoveIfUnused(const std::string& dir, const std::string& outermost) {
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec))
+    if (entry.path().filename() != kLockFileName) return;
+  if (ec) return;
+  fs::remove(fs::path(dir) / kLockFileName, ec);
+  fs::path folder = fs::absolute(dir, ec).lexically_normal();
+  if (!folder.has_filename()) folder = folder.parent_path();
+  // fs::remove takes only an empty folder: it stops at the first one holding anything
+  for (; fs::remove(folder, ec) && folder != fs::path(outermost); folder = folder.parent_path()) {
+  }
 }
 
 // a file can be created in it (the same way the outputs will be)
@@ -85,7 +107,16 @@ void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& out
 OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs)
     : dir_(dir), outputs_(std::move(outputs)) {
   if (dir_.empty()) throw InputError("command line", "--out", "expected a folder name, got \"\"");
-  EnsureFolder(dir_);
+  created_ = EnsureFolder(dir_);
+  try {
+    TakeFolder();
+  } catch (...) {
+    if (!created_.empty()) RemoveIfUnused(dir_, created_);
+    throw;
+  }
+}
+
+void OutputFolder::TakeFolder() {
   CheckWritable(dir_);
   CheckNames(dir_, outputs_);
   RefuseOtherKind(dir_, outputs_);
@@ -102,6 +133,7 @@ OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outp
 }
 
 OutputFolder::~OutputFolder() {
+  if (!created_.empty()) RemoveIfUnused(dir_, created_);
   if (lock_fd_ >= 0) close(lock_fd_);
 }
 

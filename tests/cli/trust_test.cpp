@@ -184,6 +184,13 @@ TEST_F(Trust, UnstableStepIsRefusedNamingTheLimit) {
   EXPECT_TRUE(Has(r.err, "s.json: time.step: step 0.005 s is beyond the stable limit")) << r.err;
   EXPECT_TRUE(Has(r.err, "\"car\" against \"wall\"")) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+  // refused after the folder was made: the folders the run created go again (they held only its
+  // lock), a folder that was there stays
+  fs::create_directories(dir_ / "kept");
+  const ProcessResult nested = Dymesh({"run", Write("s.json", j.dump()), "--quiet", "--out", (dir_ / "kept" / "a" / "b").string()});
+  EXPECT_EQ(nested.exit_code, 2) << nested.err;
+  EXPECT_FALSE(fs::exists(dir_ / "kept" / "a"));
+  EXPECT_TRUE(fs::is_empty(dir_ / "kept"));
 }
 
 TEST_F(Trust, StepLongerThanTheDurationIsRefused) {

@@ -24,7 +24,7 @@ class OutputFolder {
   /// exclusive lock on it. Throws InputError (field "--out") naming the folder and the reason, or
   /// OutputFolderBusy when another run holds it.
   OutputFolder(const std::string& dir, std::vector<std::string> outputs);
-  ~OutputFolder();  ///< releases the lock
+  ~OutputFolder();  ///< releases the lock; removes the folder if it created it and nothing but the lock is in it
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
 
@@ -35,8 +35,11 @@ class OutputFolder {
   const std::string& dir() const { return dir_; }
 
  private:
+  void TakeFolder();  // checks the folder and takes its lock
+
   std::string dir_;
   std::vector<std::string> outputs_;
+  std::string created_;  // the outermost folder this run created (empty: the folder existed)
   int lock_fd_ = -1;
 };
 
