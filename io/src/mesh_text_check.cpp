@@ -23,13 +23,19 @@ constexpr std::size_t kMaxObjFaceCorners = 1000;
 // most entries a PLY or OFF count may give: elements, and the corners of one face
 constexpr std::uint64_t kMaxCount = UINT64_C(1) << 40, kMaxFaceListCount = UINT64_C(1) << 20;
 
-// one element of a PLY header: its name, count, and the smallest bytes a binary record takes
+// one property of a PLY element: a scalar, or a list (its count's type and its items' type)
+struct PlyProperty {
+  bool list = false;
+  std::string count_type, type;
+};
+
+// one element of a PLY header: its name, count, properties, and the smallest bytes a binary record takes
 struct PlyElement {
   std::string name;
   std::uint64_t count = 0;
   std::uint64_t min_bytes = 0;
-  int properties = 0;
-  bool starts_with_list = false;  // its first property is a list (a face's vertex indices)
+  std::vector<PlyProperty> properties;
+  bool starts_with_list() const { return !properties.empty() && properties.front().list; }  // a face's indices
 };
 
 // bytes of a PLY scalar type (0 when unknown)
@@ -142,6 +148,66 @@ std::string FaceProblem(const std::string& line, std::uint64_t vertices) {
 }
 
 
+// reads binary PLY records: integers of a PLY type in the file's byte order
+class BinaryPlyReader {
+ public:
+  BinaryPlyReader(std::istream& in, bool big_endian) : in_(in), big_endian_(big_endian) {}
+  // the next value of `type` as an integer (false at the end of the file or for an unknown type)
+  bool Integer(const std::string& type, std::int64_t* value) {
+    const std::uint64_t bytes = PlyTypeBytes(type);
+    unsigned char raw[8];
+    if (bytes == 0 || !in_.read(reinterpret_cast<char*>(raw), static_cast<std::streamsize>(bytes))) return false;
+    std::uint64_t bits = 0;
+    for (std::uint64_t i = 0; i < bytes; ++i) bits |= std::uint64_t{raw[big_endian_ ? bytes - 1 - i : i]} << (8 * i);
+    // signed types are sign-extended; a float index is read as its bits (never a valid index then)
+    const bool is_signed = type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" ||
+                           type == "int32";
+    if (is_signed && bytes < 8 && (bits >> (8 * bytes - 1)) != 0) bits |= ~std::uint64_t{0} << (8 * bytes);
+    *value = static_cast<std::int64_t>(bits);
+    return true;
+  }
+  bool Skip(const std::string& type, std::uint64_t count) {
+    return static_cast<bool>(in_.ignore(static_cast<std::streamsize>(PlyTypeBytes(type) * count)));
+  }
+
+ private:
+  std::istream& in_;
+  bool big_endian_;
+};
+
+// every binary record read through: faces (led by their index list) of 3 or more corners, each an
+// existing vertex (assimp dropped a face with an index past the vertices without a word)
+void CheckBinaryPlyFaces(std::istream& in, bool big_endian, const std::vector<PlyElement>& elements,
+                         std::uint64_t vertices, const std::string& path, const std::string& field) {
+  BinaryPlyReader reader(in, big_endian);
+  const auto refuse = [&](std::uint64_t face, const std::string& problem) {
+    throw InputError(path, field, "binary PLY face " + std::to_string(face) + ": " + problem);
+  };
+  for (const PlyElement& e : elements)
+    for (std::uint64_t record = 0; record < e.count; ++record)
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        const PlyProperty& p = e.properties[k];
+        std::int64_t count = 1;
+        if (p.list && !reader.Integer(p.count_type, &count)) refuse(record, "the file ends inside " + e.name + " data");
+        const bool face_indices = e.name == "face" && k == 0 && p.list;
+        if (face_indices && (count < 3 || static_cast<std::uint64_t>(count) > kMaxFaceListCount))
+          refuse(record, "expected a face of 3 to " + std::to_string(kMaxFaceListCount) + " vertices, got " +
+                             std::to_string(count));
+        if (!face_indices) {
+          if (count < 0 || !reader.Skip(p.type, static_cast<std::uint64_t>(count)))
+            throw InputError(path, field, "binary PLY: the file ends inside " + e.name + " data");
+          continue;
+        }
+        for (std::int64_t c = 0; c < count; ++c) {
+          std::int64_t index = 0;
+          if (!reader.Integer(p.type, &index)) refuse(record, "the file ends inside its vertex indices");
+          if (index < 0 || static_cast<std::uint64_t>(index) >= vertices)
+            refuse(record, "vertex index " + std::to_string(index) + " is not one of the " + std::to_string(vertices) +
+                               " vertices");
+        }
+      }
+}
+
 void CheckPly(const std::string& path, const std::string& field) {
   std::ifstream in(path, std::ios::binary);
   std::string line, format;
@@ -166,10 +232,13 @@ void CheckPly(const std::string& path, const std::string& field) {
     if (keyword == "property" && !elements.empty()) {
       std::string type;
       tokens >> type;
-      const bool list = type == "list";
-      if (list) tokens >> type;  // the count's type: a list takes at least its count
-      if (elements.back().properties++ == 0) elements.back().starts_with_list = list;
-      elements.back().min_bytes += PlyTypeBytes(type);
+      PlyProperty property;
+      property.list = type == "list";
+      if (property.list) tokens >> property.count_type >> type;
+      property.type = type;
+      elements.back().properties.push_back(property);
+      // a list takes at least its count
+      elements.back().min_bytes += PlyTypeBytes(property.list ? property.count_type : type);
     }
   }
   if (line.rfind("end_header", 0) != 0) throw InputError(path, field, "PLY header has no end_header");
@@ -184,6 +253,7 @@ void CheckPly(const std::string& path, const std::string& field) {
     if (need > left)
       throw InputError(path, field, "PLY header counts need at least " + std::to_string(need) + " bytes of data; the file has " +
                                         std::to_string(left));
+    CheckBinaryPlyFaces(in, format == "binary_big_endian", elements, vertices, path, field);
     return;
   }
   // ASCII: every counted line is there, faces (led by their index list) name existing vertices
@@ -192,7 +262,7 @@ void CheckPly(const std::string& path, const std::string& field) {
       if (!NextDataLine(in, false, &number, &line))
         throw InputError(path, field, "PLY header counts " + std::to_string(e.count) + " " + e.name + " lines; the file ends after " +
                                           std::to_string(i));
-      if (e.name != "face" || !e.starts_with_list) continue;
+      if (e.name != "face" || !e.starts_with_list()) continue;
       if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
         throw InputError(path, field, At(number, line) + ": " + problem);
     }

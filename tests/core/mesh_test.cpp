@@ -277,6 +277,27 @@ TEST(MeshFiles, PlyAndOffWhoseCountsOrIndicesAreWrongAreRefused) {
                              "property float y\nproperty float z\nend_header\n";
   EXPECT_NE(LoadProblem(dir, "lying_binary.ply", binary + std::string(36, '\0')).find("need at least 12000000000 bytes"),
             std::string::npos);
+  // binary faces are read through too (assimp dropped one with an index past the vertices unsaid):
+  // 3 vertices, then faces as a uchar count and int indices, in both byte orders
+  for (const bool big : {false, true}) {
+    const std::string header = std::string("ply\nformat binary_") + (big ? "big" : "little") +
+                               "_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                               "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const std::string vertices(36, '\0');  // three vertices at the origin: only the faces are judged here
+    auto face = [big](std::vector<int> corners) {
+      std::string bytes(1, static_cast<char>(corners.size()));
+      for (const int c : corners)
+        for (int b = 0; b < 4; ++b) bytes += static_cast<char>((static_cast<unsigned>(c) >> (8 * (big ? 3 - b : b))) & 0xFF);
+      return bytes;
+    };
+    EXPECT_EQ(LoadProblem(dir, "face.ply", header + vertices + face({0, 1, 2})).find("binary PLY face"), std::string::npos);
+    EXPECT_NE(LoadProblem(dir, "past_binary.ply", header + vertices + face({0, 1, 9}))
+                  .find("binary PLY face 0: vertex index 9 is not one of the 3 vertices"), std::string::npos) << big;
+    EXPECT_NE(LoadProblem(dir, "minus_binary.ply", header + vertices + face({0, -1, 2})).find("vertex index -1"),
+              std::string::npos) << big;
+    EXPECT_NE(LoadProblem(dir, "two_binary.ply", header + vertices + face({0, 1}) + std::string(4, '\0'))
+                  .find("expected a face of 3 to"), std::string::npos) << big;
+  }
   const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
   EXPECT_EQ(LoadProblem(dir, "ok.off", off + "3 0 1 2\n"), "");
   EXPECT_NE(LoadProblem(dir, "past.off", off + "3 0 1 7\n").find("vertex index \"7\""), std::string::npos);
