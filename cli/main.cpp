@@ -139,9 +139,16 @@ int main(int argc, char** argv) {
   // command-line mistakes: one human line and exit 2 (help and version exit 0); a mistyped command
   // is named (CLI11 takes it for a stray argument and asks for a command)
   const std::string first = argc > 1 ? argv[1] : "-";
-  if (first[0] != '-' && first != "run" && first != "check" && first != "bench" && first != "ensemble") {
-    std::fprintf(stderr, "error: unknown command \"%s\": expected run, check, bench or ensemble\n"
-                         "run 'dymesh --help' for the commands\n", argv[1]);
+  std::string commands;
+  bool known = false;
+  for (const CLI::App* command : app.get_subcommands({})) {
+    if (!commands.empty()) commands += ", ";
+    commands += command->get_name();
+    known = known || command->get_name() == first;
+  }
+  if (first[0] != '-' && !known) {
+    std::fprintf(stderr, "error: unknown command \"%s\": expected one of %s\nrun 'dymesh --help' for the commands\n",
+                 first.c_str(), commands.c_str());
     return dymesh::cli::kExitBadInput;
   }
   try {

@@ -248,14 +248,14 @@ void ParseCrash3(const Reader& r, const Json& list, const Json& scenario, const 
     preset.us = us;
     preset.pointer = "/bodies/" + std::to_string(static_cast<int>(body)) + "/stiffness/" + s;
     // one source per surface's coefficients: another preset or an input would be overwritten
+    const std::string named = "bodies[" + std::to_string(static_cast<int>(body)) + "] " + s;
     for (std::size_t k = 0; k < spec->crash3.size(); ++k)
       if (spec->crash3[k].pointer == preset.pointer)
-        r.Fail(at + ".surface", "bodies[" + std::to_string(static_cast<int>(body)) + "] " + s +
-                                    " is already set by crash3[" + std::to_string(k) + "]");
+        r.Fail(at + ".surface", named + " is already set by crash3[" + std::to_string(k) + "]");
     for (std::size_t k = 0; k < spec->inputs.size(); ++k)
       if (spec->inputs[k].pointer.rfind(preset.pointer + "/", 0) == 0)
-        r.Fail(at + ".surface", "bodies[" + std::to_string(static_cast<int>(body)) + "] " + s + " is also set by inputs[" +
-                                    std::to_string(k) + "] (\"" + spec->inputs[k].path + "\"): give its stiffness one source");
+        r.Fail(at + ".surface", named + " is also set by inputs[" + std::to_string(k) + "] (\"" + spec->inputs[k].path +
+                                    "\"): give its stiffness one source");
     preset.width = r.Number(r.Require(j, at, "width"), at + ".width");
     const char* mass_key = us ? "weight" : "mass";
     preset.mass = r.Number(r.Require(j, at, mass_key), at + "." + mass_key) * (us ? 0.45359237 : 1.0);

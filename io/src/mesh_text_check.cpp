@@ -166,8 +166,10 @@ class BinaryPlyReader {
     *value = static_cast<std::int64_t>(bits);
     return true;
   }
+  // skips `count` values of `type` (false when the file ends first)
   bool Skip(const std::string& type, std::uint64_t count) {
-    return static_cast<bool>(in_.ignore(static_cast<std::streamsize>(PlyTypeBytes(type) * count)));
+    const auto bytes = static_cast<std::streamsize>(PlyTypeBytes(type) * count);
+    return in_.ignore(bytes).gcount() == bytes;
   }
 
  private:
@@ -175,36 +177,38 @@ class BinaryPlyReader {
   bool big_endian_;
 };
 
-// every binary record read through: faces (led by their index list) of 3 or more corners, each an
-// existing vertex (assimp dropped a face with an index past the vertices without a word)
+// one face's index list, its count read: 3 or more corners, each an existing vertex ("" when sound)
+std::string FaceIndicesProblem(BinaryPlyReader& reader, const std::string& type, std::int64_t count,
+                               std::uint64_t vertices) {
+  if (count < 3 || static_cast<std::uint64_t>(count) > kMaxFaceListCount)
+    return "expected a face of 3 to " + std::to_string(kMaxFaceListCount) + " vertices, got " + std::to_string(count);
+  for (std::int64_t c = 0; c < count; ++c) {
+    std::int64_t index = 0;
+    if (!reader.Integer(type, &index)) return "the file ends inside its vertex indices";
+    if (index < 0 || static_cast<std::uint64_t>(index) >= vertices)
+      return "vertex index " + std::to_string(index) + " is not one of the " + std::to_string(vertices) + " vertices";
+  }
+  return "";
+}
+
+// every binary record read through: faces (led by their index list) checked, the rest skipped
+// (assimp dropped a face with an index past the vertices without a word)
 void CheckBinaryPlyFaces(std::istream& in, bool big_endian, const std::vector<PlyElement>& elements,
                          std::uint64_t vertices, const std::string& path, const std::string& field) {
   BinaryPlyReader reader(in, big_endian);
-  const auto refuse = [&](std::uint64_t face, const std::string& problem) {
-    throw InputError(path, field, "binary PLY face " + std::to_string(face) + ": " + problem);
-  };
   for (const PlyElement& e : elements)
     for (std::uint64_t record = 0; record < e.count; ++record)
       for (std::size_t k = 0; k < e.properties.size(); ++k) {
         const PlyProperty& p = e.properties[k];
         std::int64_t count = 1;
-        if (p.list && !reader.Integer(p.count_type, &count)) refuse(record, "the file ends inside " + e.name + " data");
-        const bool face_indices = e.name == "face" && k == 0 && p.list;
-        if (face_indices && (count < 3 || static_cast<std::uint64_t>(count) > kMaxFaceListCount))
-          refuse(record, "expected a face of 3 to " + std::to_string(kMaxFaceListCount) + " vertices, got " +
-                             std::to_string(count));
-        if (!face_indices) {
-          if (count < 0 || !reader.Skip(p.type, static_cast<std::uint64_t>(count)))
-            throw InputError(path, field, "binary PLY: the file ends inside " + e.name + " data");
+        bool read = !p.list || reader.Integer(p.count_type, &count);
+        if (read && e.name == "face" && k == 0 && p.list) {
+          if (const std::string problem = FaceIndicesProblem(reader, p.type, count, vertices); !problem.empty())
+            throw InputError(path, field, "binary PLY face " + std::to_string(record) + ": " + problem);
           continue;
         }
-        for (std::int64_t c = 0; c < count; ++c) {
-          std::int64_t index = 0;
-          if (!reader.Integer(p.type, &index)) refuse(record, "the file ends inside its vertex indices");
-          if (index < 0 || static_cast<std::uint64_t>(index) >= vertices)
-            refuse(record, "vertex index " + std::to_string(index) + " is not one of the " + std::to_string(vertices) +
-                               " vertices");
-        }
+        read = read && count >= 0 && reader.Skip(p.type, static_cast<std::uint64_t>(count));
+        if (!read) throw InputError(path, field, "binary PLY: the file ends inside its " + e.name + " data");
       }
 }
 

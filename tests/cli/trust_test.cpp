@@ -535,7 +535,7 @@ TEST_F(Trust, CommandLineMistakesGetOneHumanLine) {
   // negative sample counts; an empty --shard ran every sample
   const ProcessResult typo = Dymesh({"ensamble", "spec.json"});
   EXPECT_EQ(typo.exit_code, 2);
-  EXPECT_TRUE(Has(typo.err, "error: unknown command \"ensamble\": expected run, check, bench or ensemble")) << typo.err;
+  EXPECT_TRUE(Has(typo.err, "error: unknown command \"ensamble\": expected one of run, check, bench, ensemble")) << typo.err;
   for (const std::vector<std::string>& args : {std::vector<std::string>{"replay", "spec.json", "--index", "0"},
                                                std::vector<std::string>{"merge", "spec.json", "shard1"}}) {
     std::vector<std::string> command = {"ensemble"};
