@@ -9,11 +9,41 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// stiffest linear slope of a body's surfaces [N/m^3] (0 for a rigid body: it takes no crush)
-double SurfaceSlope(const BodyModel& model) {
+// samples of the loading law's slope between no crush and the crush the pair can reach
+constexpr int kSlopeSamples = 16;
+
+// spec §4 loading law per area: its work W(c) [N/m] and its slope dp/dc [N/m^3] at crush c (the null
+// band and saturation left out: estimates)
+double LawWork(const Stiffness& k, double c) { return c * (k.A + c * (k.B / 2 + c * (k.C / 3 + c * k.D / 4))); }
+double LawSlope(const Stiffness& k, double c) { return k.B + c * (2 * k.C + 3 * k.D * c); }
+
+// the crush at which the law over `area` takes `energy` [m] (bisection up to `longest`; 0 without energy)
+double CrushTaking(const Stiffness& k, double area, double energy, double longest) {
+  if (!(energy > 0.0) || !(area > 0.0) || LawWork(k, longest) * area <= energy) return energy > 0.0 ? longest : 0.0;
+  double low = 0.0, high = longest;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (low + high);
+    (LawWork(k, mid) * area < energy ? low : high) = mid;
+  }
+  return high;
+}
+
+// stiffest slope of a body's surfaces [N/m^3] (0 for a rigid body: it takes no crush): B, the
+// unloading slope Kv, and with quadratic or cubic terms (C3, D3) the law's slope up to the crush at
+// which that surface alone, over `area`, takes the pair's relative kinetic energy `energy`
+double SurfaceSlope(const BodyModel& model, double area, double energy) {
   if (model.rigid) return 0.0;
+  const MeshStats bounds = ComputeStats(model.mesh);
+  const double longest = (bounds.max - bounds.min).maxCoeff();
   double slope = 0.0;
-  for (const Stiffness& k : model.stiffness) slope = std::max({slope, k.B, k.unload_slope});
+  for (const Stiffness& k : model.stiffness) {
+    slope = std::max({slope, k.B, k.unload_slope});
+    if (k.C == 0.0 && k.D == 0.0) continue;
+    double reach = CrushTaking(k, area, energy, longest);
+    if (k.sat_crush > 0.0) reach = std::min(reach, k.sat_crush);
+    if (k.max_crush > 0.0) reach = std::min(reach, k.max_crush);
+    for (int i = 1; i <= kSlopeSamples; ++i) slope = std::max(slope, LawSlope(k, reach * i / kSlopeSamples));
+  }
   return slope;
 }
 
@@ -61,18 +91,20 @@ TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::sha
   double best_omega = 0.0;
   for (int a = 0; a < static_cast<int>(models.size()); ++a)
     for (int b = a + 1; b < static_cast<int>(models.size()); ++b) {
-      // the two bodies' surfaces in series over the smaller projected area
-      const double slope_a = SurfaceSlope(*models[a]), slope_b = SurfaceSlope(*models[b]);
-      if (slope_a == 0.0 && slope_b == 0.0) continue;
-      const double compliance = (slope_a > 0.0 ? 1.0 / slope_a : 0.0) + (slope_b > 0.0 ? 1.0 / slope_b : 0.0);
       const RigidState& pa = scenario.bodies[a].initial;
       const RigidState& pb = scenario.bodies[b].initial;
       const Vec3 d = ClosingDirection(pa, pb);
       const double area = std::min(ProjectedArea(*models[a], pa, d), ProjectedArea(*models[b], pb, d));
-      const double k = area / compliance;
       // reduced mass; two fixed bodies never move relative to each other
       const double inverse_mass = InverseMass(scenario, *models[a], a) + InverseMass(scenario, *models[b], b);
-      if (!(inverse_mass > 0.0) || !(k > 0.0)) continue;
+      if (!(inverse_mass > 0.0)) continue;
+      const double energy = 0.5 * (pa.velocity - pb.velocity).squaredNorm() / inverse_mass;
+      // the two bodies' surfaces in series over the smaller projected area
+      const double slope_a = SurfaceSlope(*models[a], area, energy), slope_b = SurfaceSlope(*models[b], area, energy);
+      if (slope_a == 0.0 && slope_b == 0.0) continue;
+      const double compliance = (slope_a > 0.0 ? 1.0 / slope_a : 0.0) + (slope_b > 0.0 ? 1.0 / slope_b : 0.0);
+      const double k = area / compliance;
+      if (!(k > 0.0)) continue;
       const double omega = std::sqrt(k * inverse_mass);
       if (omega <= best_omega) continue;
       best_omega = omega;

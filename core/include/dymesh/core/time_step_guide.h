@@ -29,10 +29,12 @@ struct TimeStepGuide {
   double reach_step = 0.0;        ///< [s] contact.toofar_maximum / relative_speed
 };
 
-/// Estimates, for every pair of bodies that can meet, a linear contact stiffness (the stiffer of the
-/// loading slope B and the unloading slope Kv over a body's surfaces, times the smaller projected
-/// bounds area across the closing direction, the two bodies in series) and the pair's reduced mass,
-/// and returns the shortest period. An upper bound on the stiffness: real contact areas are smaller.
+/// Estimates, for every pair of bodies that can meet, a linear contact stiffness (the stiffest of the
+/// loading slope B, the unloading slope Kv and, with quadratic or cubic terms C3, D3, the loading law's
+/// slope up to the crush at which that surface alone takes the pair's relative kinetic energy, over a
+/// body's surfaces, times the smaller projected bounds area across the closing direction, the two
+/// bodies in series) and the pair's reduced mass, and returns the shortest period. An upper bound on
+/// the stiffness: real contact areas are smaller.
 /// Also the step the search reach allows the fastest pair (pairs of two rigid bodies left out).
 TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::shared_ptr<const BodyModel>>& models);
 
