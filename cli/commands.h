@@ -42,7 +42,8 @@ struct EnsembleRequest {
 };
 
 /// Runs an ensemble spec into `out_dir` (resuming what is there); 130 when interrupted (the
-/// journal keeps the samples done). Throws InputError on a bad spec.
+/// journal keeps the samples done); 3 when no sample reached the statistics or the evidence leaves
+/// too few effective samples (stderr says which). Throws InputError on a bad spec.
 int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& interrupts, std::ostream& out,
                     std::ostream& err);
 
@@ -50,9 +51,9 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
 int EnsembleReplayCommand(const std::string& spec_path, int samples, int index, const std::string& out_dir,
                           std::ostream& out);
 
-/// Joins shard folders into `out_dir`.
+/// Joins shard folders into `out_dir`; 3 when the evidence leaves too few effective samples (stderr).
 int EnsembleMergeCommand(const std::string& spec_path, int samples, const std::vector<std::string>& shards,
-                         const std::string& out_dir, std::ostream& out);
+                         const std::string& out_dir, std::ostream& out, std::ostream& err);
 
 /// Validates a scenario and its meshes without running and prints what it found (mesh statistics
 /// in the scenario's units, body surfaces). Throws InputError on bad input.

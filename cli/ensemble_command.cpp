@@ -2,9 +2,11 @@
 // sample with the full single-run outputs, merges shards.
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <optional>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 
 #include "commands.h"
@@ -64,6 +66,22 @@ ensemble::RunCounts RunOnRanks(const ensemble::Spec& spec, const ensemble::RunOp
   return ensemble::RunEnsemble(spec, options);
 }
 
+// the warning ensemble.json holds on a posterior of too few effective samples, else empty
+std::string PosteriorWarning(const std::string& out_dir) {
+  std::ifstream in(out_dir + "/ensemble.json");
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.contains("posterior") || !j["posterior"].contains("warning")) return "";
+  return j["posterior"]["warning"].get<std::string>();
+}
+
+// exit 3 with the posterior's warning on stderr when it has one
+int ExitForPosterior(const std::string& out_dir, std::ostream& err) {
+  const std::string warning = PosteriorWarning(out_dir);
+  if (warning.empty()) return kExitOk;
+  err << "warning: " << warning << " (posterior in " << out_dir << "/ensemble.json)\n";
+  return kExitWarnings;
+}
+
 }  // namespace
 
 int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& interrupts, std::ostream& out,
@@ -95,7 +113,7 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
            "status_counts and voided_by_warning in ensemble.json): ensemble.json holds no outputs\n";
     return kExitWarnings;
   }
-  return kExitOk;
+  return ExitForPosterior(request.out_dir, err);
 }
 
 int EnsembleReplayCommand(const std::string& spec_path, int samples, int index, const std::string& out_dir,
@@ -123,11 +141,11 @@ int EnsembleReplayCommand(const std::string& spec_path, int samples, int index, 
 }
 
 int EnsembleMergeCommand(const std::string& spec_path, int samples, const std::vector<std::string>& shards,
-                         const std::string& out_dir, std::ostream& out) {
+                         const std::string& out_dir, std::ostream& out, std::ostream& err) {
   const ensemble::Spec spec = LoadRequestedSpec(spec_path, samples);
   ensemble::MergeShards(spec, shards, out_dir);
   out << shards.size() << " shards merged into " << out_dir << ": samples.jsonl, ensemble.json, report.html\n";
-  return kExitOk;
+  return ExitForPosterior(out_dir, err);
 }
 
 }  // namespace dymesh::cli

@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
   if (*replay)
     return Guarded([&] { return dymesh::cli::EnsembleReplayCommand(replay_spec, ens.samples, replay_index, replay_out, std::cout); });
   if (*merge)
-    return Guarded([&] { return dymesh::cli::EnsembleMergeCommand(merge_spec, ens.samples, merge_shards, merge_out, std::cout); });
+    return Guarded([&] { return dymesh::cli::EnsembleMergeCommand(merge_spec, ens.samples, merge_shards, merge_out, std::cout, std::cerr); });
   if (*ensemble) {
     if (ens.spec_path.empty()) {
       std::fprintf(stderr, "error: ensemble: give a spec file (or: ensemble replay | ensemble merge)\n");

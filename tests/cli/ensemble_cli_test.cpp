@@ -5,10 +5,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include "../ensemble/box_spec.h"
 #include "cli_fixture.h"
@@ -281,12 +283,37 @@ TEST_F(Ensemble, EvidenceGivesThePosteriorOfTheImpactSpeed) {
   std::string text = ReadFile(path);
   text.insert(text.rfind('}'), R"(, "evidence": [{"observable": "box.delta_v", "value": 36.3, "sd": 0.5}])");
   std::ofstream(path) << text;
-  ASSERT_EQ(Dymesh({"ensemble", path, "--quiet", "--out", (dir_ / "out").string()}).exit_code, 0);
+  const ProcessResult r = Dymesh({"ensemble", path, "--quiet", "--out", (dir_ / "out").string()});
   const nlohmann::json post = nlohmann::json::parse(ReadFile(dir_ / "out" / "ensemble.json"))["posterior"];
-  EXPECT_GT(post["effective_sample_size"].get<double>(), 3.0);
-  EXPECT_LT(post["effective_sample_size"].get<double>(), 60.0);
+  const double effective = post["effective_sample_size"].get<double>();
+  EXPECT_GT(effective, 3.0);
+  EXPECT_LT(effective, 60.0);
   EXPECT_NEAR(post["inputs"]["speed"]["mean"].get<double>(), 33.0, 1.5);
   EXPECT_NEAR(post["outputs"]["box.delta_v"]["mean"].get<double>(), 36.3, 1.0);
+  // fewer than 20 effective samples (P5 and P95 each need one beyond them): warned, in ensemble.json
+  // and on stderr, exit 3 (a 0.5 mph band over a 10 mph prior keeps about 60 x 0.1 x 1.25 of the 60)
+  const bool few = effective < 20.0;
+  EXPECT_EQ(r.exit_code, few ? 3 : 0) << r.err;
+  EXPECT_EQ(post.contains("warning"), few);
+  EXPECT_EQ(r.err.find("effective sample size") != std::string::npos, few) << r.err;
+  std::printf("[measured] posterior of 60 samples, delta-V 36.3 +- 0.5 mph: effective sample size %.1f\n", effective);
+}
+
+TEST_F(Ensemble, APosteriorOfTooFewEffectiveSamplesIsWarnedAndOneOfEnoughIsNot) {
+  // a 0.05 mph band: a sample or two carry the posterior; a 5 mph band: most of the 24 samples do
+  for (const auto& [sd, warned] : {std::pair{"0.05", true}, std::pair{"5", false}}) {
+    std::string path = dymesh::testing::WriteBoxSpec(dir_, 24);
+    std::string text = ReadFile(path);
+    text.insert(text.rfind('}'), std::string(R"(, "evidence": [{"observable": "box.delta_v", "value": 36.3, "sd": )") + sd + "}]");
+    std::ofstream(path) << text;
+    const fs::path out = dir_ / (std::string("sd") + sd);
+    const ProcessResult r = Dymesh({"ensemble", path, "--quiet", "--out", out.string()});
+    const nlohmann::json post = nlohmann::json::parse(ReadFile(out / "ensemble.json"))["posterior"];
+    EXPECT_EQ(r.exit_code, warned ? 3 : 0) << sd << r.err;
+    EXPECT_EQ(post.contains("warning"), warned) << sd;
+    EXPECT_EQ(post["effective_sample_size"].get<double>() < 20.0, warned) << sd;
+    EXPECT_EQ(r.err.find("warning: the evidence leaves an effective sample size of") != std::string::npos, warned) << r.err;
+  }
 }
 
 TEST_F(Ensemble, StopToleranceEndsAtASettledCheckpointTheSameAtAnyThreadCount) {

@@ -50,6 +50,9 @@ SobolIndices SobolFromSaltelli(const std::vector<double>& fa, const std::vector<
 /// their effective sample size (sum w)^2 / sum w^2.
 std::vector<double> EvidenceWeights(const Spec& spec, const std::vector<SampleRecord>& records, double* effective);
 
+/// Fewer effective samples than this leave the posterior's 5 % tails without one sample each (1 / 0.05).
+inline constexpr double kMinEffectiveSamples = 20.0;
+
 /// ensemble.json text: counts by status, statistics per output, exceedance probabilities.
 std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& records);
 
