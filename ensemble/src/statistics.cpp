@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 
@@ -138,11 +139,14 @@ nlohmann::json PosteriorJson(const Spec& spec, const std::vector<SampleRecord>& 
   nlohmann::json out;
   out["effective_sample_size"] = effective;
   // a posterior carried by a handful of samples: its percentiles are those samples' values
-  if (effective < kMinEffectiveSamples)
-    out["warning"] = "the evidence leaves an effective sample size of " + std::to_string(effective) + ", under " +
-                     std::to_string(static_cast<int>(kMinEffectiveSamples)) +
-                     " (P5 and P95 each need a sample beyond them): the posterior statistics are not resolved; "
-                     "run more samples or check the evidence against the prior's outputs";
+  if (effective < kMinEffectiveSamples) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "the evidence leaves an effective sample size of %.1f, under %.0f (P5 and P95 each need a sample "
+                  "beyond them): the posterior statistics are not resolved; run more samples or check the evidence "
+                  "against the prior's outputs", effective, kMinEffectiveSamples);
+    out["warning"] = text;
+  }
   for (const Evidence& e : spec.evidence) out["evidence"].push_back({{"observable", e.observable}, {"value", e.value}, {"sd", e.sd}});
   for (std::size_t k = 0; k < spec.inputs.size(); ++k) {
     std::vector<std::pair<double, double>> vw;
