@@ -141,14 +141,13 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
   // a pair's contact that left it closing along its impulse at over half its closing speed, once the
   // run is over (still in contact, or stopped early, the bodies may yet be stopped: the status says so)
   for (const PairSummary& p : s.pairs)
-    if (status == RunStatus::kComplete && p.closing_speed > 0.0 &&
-        p.separation_speed < kPassThroughSeparation * p.closing_speed)
+    if (status == RunStatus::kComplete && p.closing_speed > 0.0 && p.restitution() < kPassThroughSeparation)
       w->push_back({"passed_through", "",
                     Text("\"%s\" and \"%s\" still closed at %.0f %% of their closing speed when the run ended: "
                          "they passed through each other instead of crushing (coarse meshes whose faces meet "
                          "between their nodes); delta-V, crush and energies are not physical",
                          s.bodies[p.a].name.c_str(), s.bodies[p.b].name.c_str(),
-                         -100.0 * p.separation_speed / p.closing_speed)});
+                         -100.0 * p.restitution())});
   if (s.diagnostics.non_finite > 0)
     w->push_back({"non_finite_nodes", "",
                   Text("%lld node updates were skipped as non-finite", s.diagnostics.non_finite)});

@@ -11,6 +11,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 // samples of the loading law's slope between no crush and the crush the pair can reach
 constexpr int kSlopeSamples = 16;
+// halvings of the crush bracket: 60 take the body's length below a double's resolution of it
+constexpr int kBisectionSteps = 60;
 
 // spec §4 loading law per area: its work W(c) [N/m] and its slope dp/dc [N/m^3] at crush c (the null
 // band and saturation left out: estimates)
@@ -21,7 +23,7 @@ double LawSlope(const Stiffness& k, double c) { return k.B + c * (2 * k.C + 3 * 
 double CrushTaking(const Stiffness& k, double area, double energy, double longest) {
   if (!(energy > 0.0) || !(area > 0.0) || LawWork(k, longest) * area <= energy) return energy > 0.0 ? longest : 0.0;
   double low = 0.0, high = longest;
-  for (int i = 0; i < 60; ++i) {
+  for (int i = 0; i < kBisectionSteps; ++i) {
     const double mid = 0.5 * (low + high);
     (LawWork(k, mid) * area < energy ? low : high) = mid;
   }
@@ -30,11 +32,10 @@ double CrushTaking(const Stiffness& k, double area, double energy, double longes
 
 // stiffest slope of a body's surfaces [N/m^3] (0 for a rigid body: it takes no crush): B, the
 // unloading slope Kv, and with quadratic or cubic terms (C3, D3) the law's slope up to the crush at
-// which that surface alone, over `area`, takes the pair's relative kinetic energy `energy`
-double SurfaceSlope(const BodyModel& model, double area, double energy) {
+// which that surface alone, over `area`, takes the pair's relative kinetic energy `energy` (at most
+// the body's longest bounds side `longest`)
+double SurfaceSlope(const BodyModel& model, double longest, double area, double energy) {
   if (model.rigid) return 0.0;
-  const MeshStats bounds = ComputeStats(model.mesh);
-  const double longest = (bounds.max - bounds.min).maxCoeff();
   double slope = 0.0;
   for (const Stiffness& k : model.stiffness) {
     slope = std::max({slope, k.B, k.unload_slope});
@@ -47,10 +48,8 @@ double SurfaceSlope(const BodyModel& model, double area, double energy) {
   return slope;
 }
 
-// area of a body's bounds box projected across the earth direction d [m^2]
-double ProjectedArea(const BodyModel& model, const RigidState& pose, const Vec3& d) {
-  const MeshStats s = ComputeStats(model.mesh);
-  const Vec3 size = s.max - s.min;
+// area of a body's bounds box (sides `size`) projected across the earth direction d [m^2]
+double ProjectedArea(const Vec3& size, const RigidState& pose, const Vec3& d) {
   const Vec3 db = pose.Rotation().transpose() * d;
   return size.y() * size.z() * std::abs(db.x()) + size.x() * size.z() * std::abs(db.y()) +
          size.x() * size.y() * std::abs(db.z());
@@ -89,18 +88,25 @@ void SetReachStep(const Scenario& scenario, const std::vector<std::shared_ptr<co
 TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::shared_ptr<const BodyModel>>& models) {
   TimeStepGuide guide;
   double best_omega = 0.0;
+  // each body's bounds box sides, body frame
+  std::vector<Vec3> sizes;
+  for (const auto& model : models) {
+    const MeshStats s = ComputeStats(model->mesh);
+    sizes.push_back(s.max - s.min);
+  }
   for (int a = 0; a < static_cast<int>(models.size()); ++a)
     for (int b = a + 1; b < static_cast<int>(models.size()); ++b) {
       const RigidState& pa = scenario.bodies[a].initial;
       const RigidState& pb = scenario.bodies[b].initial;
       const Vec3 d = ClosingDirection(pa, pb);
-      const double area = std::min(ProjectedArea(*models[a], pa, d), ProjectedArea(*models[b], pb, d));
+      const double area = std::min(ProjectedArea(sizes[a], pa, d), ProjectedArea(sizes[b], pb, d));
       // reduced mass; two fixed bodies never move relative to each other
       const double inverse_mass = InverseMass(scenario, *models[a], a) + InverseMass(scenario, *models[b], b);
       if (!(inverse_mass > 0.0)) continue;
       const double energy = 0.5 * (pa.velocity - pb.velocity).squaredNorm() / inverse_mass;
       // the two bodies' surfaces in series over the smaller projected area
-      const double slope_a = SurfaceSlope(*models[a], area, energy), slope_b = SurfaceSlope(*models[b], area, energy);
+      const double slope_a = SurfaceSlope(*models[a], sizes[a].maxCoeff(), area, energy);
+      const double slope_b = SurfaceSlope(*models[b], sizes[b].maxCoeff(), area, energy);
       if (slope_a == 0.0 && slope_b == 0.0) continue;
       const double compliance = (slope_a > 0.0 ? 1.0 / slope_a : 0.0) + (slope_b > 0.0 ? 1.0 / slope_b : 0.0);
       const double k = area / compliance;

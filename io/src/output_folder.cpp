@@ -20,14 +20,20 @@ namespace fs = std::filesystem;
 
 [[noreturn]] void Refuse(const std::string& dir, const std::string& why) { throw InputError(dir, "--out", why); }
 
-// the folder exists (created when missing) and is a folder
-// creates the folder when missing; returns the outermost folder it created (empty: none)
+// dir as an absolute path without "." or "..", nor a trailing slash
+fs::path AbsoluteFolder(const std::string& dir) {
+  std::error_code ec;
+  fs::path folder = fs::absolute(dir, ec).lexically_normal();
+  return folder.has_filename() ? folder : folder.parent_path();
+}
+
+// the folder exists (created when missing) and is a folder; returns the outermost folder it
+// created (empty: none)
 std::string EnsureFolder(const std::string& dir) {
   std::error_code ec;
   const fs::file_status status = fs::status(dir, ec);
   if (status.type() == fs::file_type::not_found) {
-    fs::path outermost = fs::absolute(dir, ec).lexically_normal();
-    if (!outermost.has_filename()) outermost = outermost.parent_path();  // a trailing slash
+    fs::path outermost = AbsoluteFolder(dir);
     while (outermost.has_parent_path() && outermost.parent_path() != outermost &&
            !fs::exists(outermost.parent_path(), ec))
       outermost = outermost.parent_path();
@@ -48,8 +54,7 @@ void RemoveIfUnused(const std::string& dir, const std::string& outermost) {
     if (entry.path().filename() != kLockFileName) return;
   if (ec) return;
   fs::remove(fs::path(dir) / kLockFileName, ec);
-  fs::path folder = fs::absolute(dir, ec).lexically_normal();
-  if (!folder.has_filename()) folder = folder.parent_path();
+  fs::path folder = AbsoluteFolder(dir);
   // fs::remove takes only an empty folder: it stops at the first one holding anything
   for (; fs::remove(folder, ec) && folder != fs::path(outermost); folder = folder.parent_path()) {
   }

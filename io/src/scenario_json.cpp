@@ -748,7 +748,7 @@ BodyFields Merge(const BodyFields& base, const BodyFields& over) {
   return m;
 }
 
-// a vehicle definition file: its own units, its own paths, errors name it; `file` gets its absolute path
+// a vehicle definition file: its own units, its own paths, errors name it; *file_read gets its absolute path
 BodyFields LoadVehicle(const Source& scenario, const Json& j, const std::string& path, std::string* file_read) {
   const std::string name = ReadString(scenario, j, path);
   if (!IsFileName(name))

@@ -82,7 +82,7 @@ nlohmann::json SummaryObject(const Summary& s, UnitSystem system) {
       {"energy_balance_error", s.energy_balance_error},
       {"closing_speed", s.closing_speed * u.speed},
       {"separation_speed", s.separation_speed * u.speed},
-      {"effective_restitution", s.closing_speed > 0 ? s.separation_speed / s.closing_speed : 0.0},
+      {"effective_restitution", s.main_pair >= 0 ? s.pairs[s.main_pair].restitution() : 0.0},
       {"contact_start_s", s.contact_start},
       {"contact_end_s", s.contact_end},
       {"steps", s.steps},
