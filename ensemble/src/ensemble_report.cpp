@@ -8,6 +8,7 @@
 
 #include "dymesh/ensemble/statistics.h"
 #include "dymesh/report/svg_plot.h"
+#include "report_tables.h"
 
 namespace dymesh::ensemble {
 namespace {
@@ -15,10 +16,11 @@ namespace {
 constexpr const char* kCss = R"(
 body { font-family: sans-serif; margin: 16px; color: #222222; }
 table { border-collapse: collapse; margin: 8px 0 16px; font-size: 13px; }
-th, td { border-bottom: 1px solid #dddddd; padding: 3px 8px; text-align: right; }
+th, td { border-bottom: 1px solid #dddddd; padding: 3px 8px; text-align: right; white-space: nowrap; }
 th:first-child, td:first-child { text-align: left; }
 .figures { display: flex; flex-wrap: wrap; gap: 18px; }
 .note { font-size: 12px; color: #555555; max-width: 900px; }
+.warning { color: #b00000; font-weight: bold; max-width: 900px; }
 svg.plot { border: 1px solid #e6e6e6; }
 )";
 
@@ -92,6 +94,47 @@ std::string Tornado(const Spec& spec, const std::string& name, const Column& col
   return s + "</svg>\n";
 }
 
+// a bar's x in a plot of indices over [0, top] drawn `width` wide from `left` (negative estimates at 0)
+double IndexX(double value, double top, int left, int width) { return left + std::clamp(value / top, 0.0, 1.0) * width; }
+
+// a number of ensemble.json, 0 where it holds none (an index of an output that never varied is null)
+double NumberOr0(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : 0.0; }
+
+// Sobol' first-order and total index bars of each input with their bootstrap 95 % intervals (whiskers)
+std::string SobolBars(const std::string& name, const nlohmann::json& sobol) {
+  double top = 1.0;
+  for (const auto& [input, s] : sobol.items())
+    for (const char* key : {"first_ci95", "total_ci95"}) top = std::max(top, NumberOr0(s[key][1]));
+  const int row = 40, left = 170, width = 360, height = 52 + row * static_cast<int>(sobol.size());
+  std::string s = "<svg class=\"plot\" id=\"plot-sobol-" + Id(name) + "\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
+                  std::to_string(left + width + 60) + "\" height=\"" + std::to_string(height) + "\">\n";
+  s += "<text x=\"8\" y=\"18\" font-size=\"13\">" + XmlEscape(name) +
+       ": Sobol' indices, first order (blue) and total (orange), 95 % intervals</text>\n";
+  s += "<line x1=\"" + std::to_string(left) + "\" y1=\"28\" x2=\"" + std::to_string(left) + "\" y2=\"" +
+       std::to_string(height - 20) + "\" stroke=\"#888888\"/>\n";
+  s += "<text x=\"" + FormatFixed(IndexX(1.0, top, left, width), 1) + "\" y=\"" + std::to_string(height - 6) +
+       "\" font-size=\"11\" text-anchor=\"middle\">1</text>\n";
+  int i = 0;
+  for (const auto& [input, index] : sobol.items()) {
+    const int y = 32 + row * i++;
+    s += "<text x=\"8\" y=\"" + std::to_string(y + 20) + "\" font-size=\"12\">" + XmlEscape(input) + "</text>\n";
+    int k = 0;
+    for (const auto& [key, colour] : {std::pair{"first", "#1f77b4"}, std::pair{"total", "#ff7f0e"}}) {
+      const int bar_y = y + 18 * k++;
+      const double value = NumberOr0(index[key]);
+      const nlohmann::json& ci = index[std::string(key) + "_ci95"];
+      s += "<rect x=\"" + std::to_string(left) + "\" y=\"" + std::to_string(bar_y) + "\" width=\"" +
+           FormatFixed(IndexX(value, top, left, width) - left, 1) + "\" height=\"16\" fill=\"" + colour + "\"/>\n";
+      s += "<line x1=\"" + FormatFixed(IndexX(NumberOr0(ci[0]), top, left, width), 1) + "\" y1=\"" +
+           std::to_string(bar_y + 8) + "\" x2=\"" + FormatFixed(IndexX(NumberOr0(ci[1]), top, left, width), 1) +
+           "\" y2=\"" + std::to_string(bar_y + 8) + "\" stroke=\"#222222\"/>\n";
+      s += "<text x=\"" + std::to_string(left + width + 56) + "\" y=\"" + std::to_string(bar_y + 13) +
+           "\" font-size=\"11\" text-anchor=\"end\">" + FormatFixed(value, 2) + "</text>\n";
+    }
+  }
+  return s + "</svg>\n";
+}
+
 // a scatter plot of points sorted by x
 std::string Scatter(const std::string& id, const std::string& title, const std::string& x_label, const std::string& y_label,
                     std::vector<std::pair<double, double>> points) {
@@ -123,16 +166,6 @@ std::string Convergence(const std::string& name, const std::vector<double>& v) {
   return RenderLinePlot(plot);
 }
 
-std::string StatisticsTable(const std::map<std::string, OutputStatistics>& stats) {
-  std::string t = "<table id=\"table-statistics\"><thead><tr><th>output</th><th>n</th><th>mean</th><th>SD</th><th>P5</th>"
-                  "<th>P50</th><th>P95</th><th>min</th><th>max</th></tr></thead><tbody>\n";
-  for (const auto& [name, s] : stats)
-    t += "<tr><td>" + XmlEscape(name) + "</td><td>" + std::to_string(s.n) + "</td><td>" + FormatFixed(s.mean, 3) + "</td><td>" +
-         FormatFixed(s.sd, 3) + "</td><td>" + FormatFixed(s.p5, 3) + "</td><td>" + FormatFixed(s.p50, 3) + "</td><td>" +
-         FormatFixed(s.p95, 3) + "</td><td>" + FormatFixed(s.min, 3) + "</td><td>" + FormatFixed(s.max, 3) + "</td></tr>\n";
-  return t + "</tbody></table>\n";
-}
-
 std::string FailedTable(const std::vector<SampleRecord>& records) {
   std::string t = "<table id=\"table-failed\"><thead><tr><th>sample</th><th>status</th><th>why</th></tr></thead><tbody>\n";
   for (const SampleRecord& r : records) {
@@ -160,9 +193,10 @@ std::string SpecSection(const Spec& spec, int samples) {
 
 }  // namespace
 
-std::string EnsembleReportHtml(const Spec& spec, const std::vector<SampleRecord>& records) {
+std::string EnsembleReportHtml(const Spec& spec, const std::vector<SampleRecord>& records, const std::string& ensemble_json) {
   const std::map<std::string, Column> columns = Columns(records);
-  const auto stats = ComputeStatistics(records);
+  const nlohmann::json statistics = nlohmann::json::parse(ensemble_json);
+  const nlohmann::json outputs = statistics.value("outputs", nlohmann::json::object());
   std::string page = "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
                      "<title>DyMESH ensemble report</title>\n<style>" + std::string(kCss) + "</style>\n</head>\n<body>\n";
   int used = 0;
@@ -170,11 +204,15 @@ std::string EnsembleReportHtml(const Spec& spec, const std::vector<SampleRecord>
   page += "<h1>Ensemble: " + XmlEscape(spec.file) + "</h1>\n<p>" + std::to_string(records.size()) + " samples, " +
           std::to_string(used) + " in the statistics, " + std::to_string(records.size() - used) +
           " not (listed at the end).</p>\n";
-  page += "<h2 id=\"statistics\">Statistics</h2>\n" + StatisticsTable(stats);
+  page += "<h2 id=\"statistics\">Statistics</h2>\n" + StatisticsTable(outputs) +
+          ExceedanceTable(statistics.value("exceedance", nlohmann::json::array())) + PosteriorSection(statistics);
   // per output: distributions and convergence; delta-V outputs also get a tornado and scatter plots
   for (const auto& [name, column] : columns) {
     page += "<h3>" + XmlEscape(name) + "</h3>\n<div class=\"figures\">\n" + Distributions(name, column.values) +
             Convergence(name, column.values);
+    // Sobol' bars of an output that varies (a constant one has no variance to apportion)
+    if (outputs.contains(name) && outputs[name].contains("sobol") && NumberOr0(outputs[name]["sd"]) > 0.0)
+      page += SobolBars(name, outputs[name]["sobol"]);
     if (name.size() > 8 && name.compare(name.size() - 8, 8, ".delta_v") == 0) {
       page += Tornado(spec, name, column);
       for (std::size_t k = 0; k < spec.inputs.size(); ++k) {

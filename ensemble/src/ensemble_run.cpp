@@ -104,8 +104,9 @@ void WriteResults(const Spec& spec, const std::map<int, SampleRecord>& records, 
     ordered.push_back(r);
   }
   WriteFileAtomically((dir / kSamplesName).string(), lines);
-  WriteFileAtomically((dir / kStatisticsName).string(), EnsembleJson(spec, ordered));
-  WriteFileAtomically((dir / kReportName).string(), EnsembleReportHtml(spec, ordered));
+  const std::string statistics = EnsembleJson(spec, ordered);
+  WriteFileAtomically((dir / kStatisticsName).string(), statistics);
+  WriteFileAtomically((dir / kReportName).string(), EnsembleReportHtml(spec, ordered, statistics));
 }
 
 }  // namespace

@@ -132,6 +132,24 @@ nlohmann::json WeightedSummary(std::vector<std::pair<double, double>> vw) {
   return out;
 }
 
+// weighted mean, SD and percentiles of every input and output over the samples of positive weight
+nlohmann::json WeightedInputsAndOutputs(const Spec& spec, const std::vector<SampleRecord>& records, const std::vector<double>& w) {
+  nlohmann::json out;
+  for (std::size_t k = 0; k < spec.inputs.size(); ++k) {
+    std::vector<std::pair<double, double>> vw;
+    for (std::size_t i = 0; i < records.size(); ++i)
+      if (w[i] > 0.0 && k < records[i].inputs.size()) vw.push_back({records[i].inputs[k], w[i]});
+    out["inputs"][spec.inputs[k].name] = WeightedSummary(vw);
+  }
+  std::map<std::string, std::vector<std::pair<double, double>>> outputs;
+  for (std::size_t i = 0; i < records.size(); ++i)
+    if (w[i] > 0.0)
+      for (const auto& [name, v] : records[i].outputs) outputs[name].push_back({v, w[i]});
+  out["outputs"] = nlohmann::json::object();
+  for (auto& [name, vw] : outputs) out["outputs"][name] = WeightedSummary(vw);
+  return out;
+}
+
 // posterior statistics of every input and output, the samples weighed by the evidence
 nlohmann::json PosteriorJson(const Spec& spec, const std::vector<SampleRecord>& records) {
   double effective = 0.0;
@@ -148,17 +166,13 @@ nlohmann::json PosteriorJson(const Spec& spec, const std::vector<SampleRecord>& 
     out["warning"] = text;
   }
   for (const Evidence& e : spec.evidence) out["evidence"].push_back({{"observable", e.observable}, {"value", e.value}, {"sd", e.sd}});
-  for (std::size_t k = 0; k < spec.inputs.size(); ++k) {
-    std::vector<std::pair<double, double>> vw;
-    for (std::size_t i = 0; i < records.size(); ++i)
-      if (w[i] > 0.0 && k < records[i].inputs.size()) vw.push_back({records[i].inputs[k], w[i]});
-    out["inputs"][spec.inputs[k].name] = WeightedSummary(vw);
-  }
-  std::map<std::string, std::vector<std::pair<double, double>>> outputs;
-  for (std::size_t i = 0; i < records.size(); ++i)
-    if (w[i] > 0.0)
-      for (const auto& [name, v] : records[i].outputs) outputs[name].push_back({v, w[i]});
-  for (auto& [name, vw] : outputs) out["outputs"][name] = WeightedSummary(vw);
+  const nlohmann::json posterior = WeightedInputsAndOutputs(spec, records, w);
+  out["inputs"] = posterior["inputs"];
+  out["outputs"] = posterior["outputs"];
+  // the prior by the same estimator (every sample in the statistics weighed 1), to compare like with like
+  std::vector<double> ones(records.size(), 0.0);
+  for (std::size_t i = 0; i < records.size(); ++i) ones[i] = records[i].in_statistics() ? 1.0 : 0.0;
+  out["prior"] = WeightedInputsAndOutputs(spec, records, ones);
   return out;
 }
 

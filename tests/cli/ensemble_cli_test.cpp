@@ -77,7 +77,7 @@ TEST_F(Ensemble, SameBytesAtOneAndTwoThreadsAndOrderedByIndex) {
   EXPECT_EQ(dymesh::testing::XmlWellFormedError(html), "");
   for (const char* id : {"plot-histogram-box-delta-v", "plot-cdf-box-delta-v", "plot-convergence-box-delta-v",
                          "plot-tornado-box-delta-v", "plot-scatter-speed-box-delta-v", "plot-dv-pdof-box",
-                         "table-statistics", "table-failed", "table-inputs"})
+                         "table-statistics", "table-exceedance", "table-failed", "table-inputs"})
     EXPECT_NE(html.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
   for (const char* banned : {"<script", "src=", "href="}) EXPECT_EQ(html.find(banned), std::string::npos) << banned;
   for (int i = 0; i < 12; ++i) EXPECT_EQ(nlohmann::json::parse(Line(dir_ / "1" / "samples.jsonl", i))["index"], i);
@@ -261,6 +261,21 @@ TEST_F(Ensemble, SaltelliDesignGivesSobolIndices) {
   EXPECT_EQ(sobol["speed"]["rows"], 16);
   EXPECT_GT(sobol["speed"]["total"].get<double>(), sobol["restitution"]["total"].get<double>());
   EXPECT_GT(sobol["speed"]["first"].get<double>(), 0.5);
+  // the report draws them: one first-order and one total bar per input, labelled with ensemble.json's values
+  const std::string html = ReadFile(dir_ / "out" / "report.html");
+  EXPECT_EQ(dymesh::testing::XmlWellFormedError(html), "");
+  const std::size_t begin = html.find("<svg class=\"plot\" id=\"plot-sobol-box-delta-v\"");
+  ASSERT_NE(begin, std::string::npos);
+  const std::string svg = html.substr(begin, html.find("</svg>", begin) - begin);
+  std::size_t bars = 0;
+  for (std::size_t at = svg.find("<rect"); at != std::string::npos; at = svg.find("<rect", at + 1)) ++bars;
+  EXPECT_EQ(bars, 4u);
+  for (const char* input : {"speed", "restitution"})
+    for (const char* index : {"first", "total"}) {
+      char label[32];
+      std::snprintf(label, sizeof label, ">%.2f</text>", sobol[input][index].get<double>());
+      EXPECT_NE(svg.find(label), std::string::npos) << input << " " << index << " " << label;
+    }
 }
 
 TEST_F(Ensemble, OneAtATimeGivesTheSwings) {
@@ -296,6 +311,22 @@ TEST_F(Ensemble, EvidenceGivesThePosteriorOfTheImpactSpeed) {
   EXPECT_EQ(r.exit_code, few ? 3 : 0) << r.err;
   EXPECT_EQ(post.contains("warning"), few);
   EXPECT_EQ(r.err.find("effective sample size") != std::string::npos, few) << r.err;
+  // the report shows the same posterior: its effective sample size, the warning when there is one, and
+  // the posterior mean speed beside the prior's
+  const std::string html = ReadFile(dir_ / "out" / "report.html");
+  EXPECT_EQ(dymesh::testing::XmlWellFormedError(html), "");
+  char ess[64], speed[128];
+  std::snprintf(ess, sizeof ess, "effective sample size %.1f.", effective);
+  std::snprintf(speed, sizeof speed, "<tr><td>speed</td><td>%.3f</td>", post["prior"]["inputs"]["speed"]["mean"].get<double>());
+  EXPECT_NE(html.find(ess), std::string::npos) << ess;
+  EXPECT_NE(html.find(speed), std::string::npos) << speed;
+  char posterior_mean[32];
+  std::snprintf(posterior_mean, sizeof posterior_mean, "<td>%.3f</td>", post["inputs"]["speed"]["mean"].get<double>());
+  EXPECT_NE(html.find(posterior_mean, html.find(speed)), std::string::npos) << posterior_mean;
+  EXPECT_EQ(html.find("id=\"posterior-warning\"") != std::string::npos, few);
+  // the prior weighs every sample alike: 60 samples of a uniform 25..35 mph, mean 30 within 3 SE
+  // (SE = 10 / sqrt(12 x 60) = 0.37 mph; Latin hypercube strata make it far tighter)
+  EXPECT_NEAR(post["prior"]["inputs"]["speed"]["mean"].get<double>(), 30.0, 3 * 0.37);
   std::printf("[measured] posterior of 60 samples, delta-V 36.3 +- 0.5 mph: effective sample size %.1f\n", effective);
 }
 
