@@ -91,14 +91,20 @@ int main(int argc, char** argv) {
   dymesh::cli::BenchRequest bench;
   std::vector<std::string> axes;
   CLI::App* bench_cmd = app.add_subcommand("bench", "locate rates, step time and memory for two meshes in contact");
-  bench_cmd->add_option("--master", bench.master, "master mesh file (metres)");
-  bench_cmd->add_option("--slave", bench.slave, "slave mesh file (metres)");
-  bench_cmd->add_option("--ensemble", bench.ensemble, "time an ensemble spec's samples instead of two meshes");
-  bench_cmd->add_option("--samples", bench.samples, "ensemble samples timed per thread setting")->check(CLI::Range(1, 100000));
+  CLI::Option* bench_master = bench_cmd->add_option("--master", bench.master, "master mesh file (metres)");
+  CLI::Option* bench_slave = bench_cmd->add_option("--slave", bench.slave, "slave mesh file (metres)");
+  CLI::Option* bench_ensemble =
+      bench_cmd->add_option("--ensemble", bench.ensemble, "time an ensemble spec's samples instead of two meshes");
+  bench_cmd->add_option("--samples", bench.samples, "ensemble samples timed per thread setting")
+      ->check(CLI::Range(1, 100000))
+      ->needs(bench_ensemble);
   bench_cmd->add_option("--threads", bench.threads, "worker threads for the step timing")->check(kThreadCount);
-  bench_cmd->add_option("--axes", axes, "body x,y,z from signed mesh axes, e.g. --axes=x,z,-y for y-up meshes")
-      ->delimiter(',')
-      ->expected(3);
+  CLI::Option* bench_axes =
+      bench_cmd->add_option("--axes", axes, "body x,y,z from signed mesh axes, e.g. --axes=x,z,-y for y-up meshes")
+          ->delimiter(',')
+          ->expected(3);
+  // an ensemble is timed, or two meshes: never both (one would be silently ignored)
+  bench_ensemble->excludes(bench_master)->excludes(bench_slave)->excludes(bench_axes);
   bench_cmd->add_flag("--json", bench.json, "print JSON");
   // ensemble: run a spec; replay one sample; merge shards
   dymesh::cli::EnsembleRequest ens;

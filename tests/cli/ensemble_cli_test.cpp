@@ -374,6 +374,13 @@ TEST_F(Ensemble, BenchReportsSamplesPerSecondAndMemory) {
   const ProcessResult neither = Dymesh({"bench"});
   EXPECT_EQ(neither.exit_code, 2);
   EXPECT_NE(neither.err.find("give both mesh files, or --ensemble SPEC"), std::string::npos) << neither.err;
+  // an ensemble and meshes together, or a sample count for meshes: refused, not one silently ignored
+  const ProcessResult both = Dymesh({"bench", "--ensemble", spec, "--master", spec});
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("--master excludes --ensemble"), std::string::npos) << both.err;
+  const ProcessResult samples = Dymesh({"bench", "--master", spec, "--slave", spec, "--samples", "3"});
+  EXPECT_EQ(samples.exit_code, 2);
+  EXPECT_NE(samples.err.find("--samples requires --ensemble"), std::string::npos) << samples.err;
 }
 
 TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
