@@ -14,6 +14,7 @@
 #include "dymesh/ensemble/random_stream.h"
 #include "dymesh/ensemble/sample_run.h"
 #include "dymesh/ensemble/sobol_sequence.h"
+#include "dymesh/io/json_document.h"
 #include "dymesh/io/scenario_json.h"
 
 namespace dymesh::ensemble {
@@ -396,12 +397,8 @@ Spec LoadSpec(const std::string& path) {
   const Reader r{path};
   Spec spec;
   spec.file = path;
-  Json j;
-  try {
-    j = Json::parse(ReadText(path, path, "(file)"));
-  } catch (const Json::parse_error& e) {
-    r.Fail("(json)", std::string("malformed JSON: ") + e.what());
-  }
+  // strict: a duplicate key, a number out of range or malformed JSON is refused at its field
+  const Json j = ParseJsonDocument(ReadText(path, path, "(file)"), path);
   if (!j.is_object()) r.Fail("(root)", "expected an object");
   for (const auto& item : j.items())
     if (item.key() != "scenario" && item.key() != "inputs" && item.key() != "design" && item.key() != "samples" &&

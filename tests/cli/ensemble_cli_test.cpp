@@ -417,6 +417,14 @@ TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
        "inputs[2].path: \"bodies[0].restitution\" is already set by inputs[1]"},
       {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"uniform": {"low": 20, "high": 30}}})",
        "inputs (each at its median): the scenario refuses this sample: "},
+      // read as strictly as a scenario (2026-11-25): a duplicate key kept only its last value, a number out
+      // of range and malformed JSON gave the JSON library's own message
+      {R"(, {"name": "x", "name": "y", "path": "bodies[0].friction", "distribution": {"fixed": 0.1}})",
+       "inputs[2].name: duplicate key \"name\""},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"fixed": 1e999}})",
+       "inputs[2].distribution.fixed: expected a finite number, got 1e999"},
+      {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"fixed": 0.1})",
+       "(json): malformed JSON at byte "},
   };
   for (const Case& c : cases) {
     const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 5, "latin_hypercube", c.extra);
