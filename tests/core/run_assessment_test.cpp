@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -43,6 +44,20 @@ TEST(RunAssessment, NonFiniteMotionStopsTheRunAndMarksItFailed) {
   EXPECT_TRUE(named);
   const std::string json = SummaryJson(summary, s, {});
   EXPECT_EQ(json.find("null"), std::string::npos) << json;
+}
+
+TEST(RunAssessment, TheRunEndsAtTheStepNearestItsDuration) {
+  // whole steps only: round(duration / step) of them, so the end is within half a step of the duration
+  // (0.01 s is 14.3 steps of 0.7 ms: 14, short by 0.2 ms; 16.7 of 0.6 ms: 17, past it by 0.2 ms)
+  for (const double step : {0.0003, 0.0006, 0.0007}) {
+    Scenario s = testing::BarrierScenario(30.0, 0.1, step);
+    s.duration = 0.01;
+    s.stop_at_separation = false;
+    Simulation sim(s, BuildBodyModels(s), accel::MakeBruteForceLocatorFactory());
+    EXPECT_TRUE(sim.Run());
+    EXPECT_EQ(sim.steps(), std::lround(s.duration / step)) << step;
+    EXPECT_LE(std::abs(sim.time() - s.duration), 0.5 * step + 1e-15) << step;
+  }
 }
 
 TEST(RunAssessment, OverflowingResultsAreFailedAndStillNumbers) {
