@@ -206,7 +206,7 @@ std::string EnsembleReportHtml(const Spec& spec, const std::vector<SampleRecord>
           " not (listed at the end).</p>\n";
   page += "<h2 id=\"statistics\">Statistics</h2>\n" + StatisticsTable(outputs) +
           ExceedanceTable(statistics.value("exceedance", nlohmann::json::array())) + PosteriorSection(statistics);
-  // per output: distributions and convergence; delta-V outputs also get a tornado and scatter plots
+  // per output: distributions, convergence and Sobol' bars; delta-V outputs also get a tornado and scatter plots
   for (const auto& [name, column] : columns) {
     page += "<h3>" + XmlEscape(name) + "</h3>\n<div class=\"figures\">\n" + Distributions(name, column.values) +
             Convergence(name, column.values);
