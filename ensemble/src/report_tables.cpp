@@ -5,15 +5,18 @@
 namespace dymesh::ensemble {
 namespace {
 
+// a cell ensemble.json has no number for
+constexpr const char* kNoValue = "<td>&#8211;</td>";
+
 // a table cell of a number (3 decimals), or a dash when ensemble.json has none
 std::string Cell(const nlohmann::json& value) {
-  return "<td>" + (value.is_number() ? FormatFixed(value.get<double>(), 3) : std::string("&#8211;")) + "</td>";
+  return value.is_number() ? "<td>" + FormatFixed(value.get<double>(), 3) + "</td>" : kNoValue;
 }
 
 // a cell of an interval [low, high]
 std::string IntervalCell(const nlohmann::json& interval) {
   if (!interval.is_array() || interval.size() != 2 || !interval[0].is_number() || !interval[1].is_number())
-    return "<td>&#8211;</td>";
+    return kNoValue;
   return "<td>" + FormatFixed(interval[0].get<double>(), 3) + " .. " + FormatFixed(interval[1].get<double>(), 3) + "</td>";
 }
 
@@ -24,7 +27,7 @@ std::string SummaryCells(const nlohmann::json& s) {
   return cells;
 }
 
-// prior (the statistics' outputs, or the input's own samples) and posterior rows of one group
+// one row per quantity of a group (inputs or outputs): its prior and posterior summaries side by side
 std::string PriorPosteriorRows(const nlohmann::json& prior, const nlohmann::json& posterior) {
   std::string rows;
   for (const auto& [name, post] : posterior.items())

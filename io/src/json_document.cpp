@@ -1,27 +1,21 @@
 #include "dymesh/io/json_document.h"
 
-#include <string_view>
 #include <vector>
 
 #include "dymesh/core/scenario.h"
+#include "json_path.h"
 
 namespace dymesh {
 namespace {
 
 using Json = nlohmann::json;
 
-std::string Join(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
-}
+using json_path::At;
+using json_path::FieldName;
+using json_path::Join;
 
-std::string At(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
-
-// name of the whole document in messages
-std::string FieldName(const std::string& path) { return path.empty() ? "(root)" : path; }
-
-// parsing: a DOM builder that knows the JSON path of every token, so that number overflow
-// (1e999) and duplicate keys are reported at their field
-
+// a DOM builder that knows the JSON path of every token, so that number overflow (1e999) and
+// duplicate keys are reported at their field
 class PathTrackingBuilder {
  public:
   explicit PathTrackingBuilder(Json* root) : root_(root) {}

@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "dymesh/core/units.h"
+#include "json_path.h"
 
 namespace dymesh {
 namespace {
@@ -76,14 +77,9 @@ struct Source {
 // ---------------------------------------------------------------------------------------------
 // JSON paths and value descriptions for messages
 
-std::string Join(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
-}
-
-std::string At(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
-
-// name of the whole document in messages
-std::string FieldName(const std::string& path) { return path.empty() ? "(root)" : path; }
+using json_path::At;
+using json_path::FieldName;
+using json_path::Join;
 
 // shortest text that reads back as the same double
 std::string FormatDouble(double v) {
