@@ -79,6 +79,22 @@ double RelativeKineticEnergyBefore(const Simulation& sim) {
   return energy;
 }
 
+// the vertex farthest outside the body's undamaged bounds (body frame) and how far [m]
+struct NodeOutside {
+  int vertex = -1;
+  double distance = 0.0;
+};
+NodeOutside FarthestOutsideRestBounds(const BodyModel& model, const BodyState& state) {
+  const MeshStats rest = ComputeStats(model.mesh);
+  NodeOutside out;
+  for (std::size_t v = 0; v < state.vertices.size(); ++v) {
+    const Vec3& p = state.vertices[v];
+    const double beyond = std::max((rest.min - p).maxCoeff(), (p - rest.max).maxCoeff());
+    if (beyond > out.distance) out = {static_cast<int>(v), beyond};
+  }
+  return out;
+}
+
 RunStatus StatusOf(const Simulation& sim, const Summary& summary) {
   if (sim.failed_numerics() || !SummaryFinite(summary)) return RunStatus::kFailedNumerics;
   if (!sim.finished()) return RunStatus::kInterrupted;
@@ -137,6 +153,18 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                     Text("\"%s\": maximum crush %.3g m exceeds the body's length %.3g m: the mesh was pushed "
                          "through itself; the crush law or the stiffness does not fit this body",
                          s.bodies[i].name.c_str(), s.bodies[i].max_crush, length)});
+  }
+  // a node ended beyond its body's undamaged bounds by more than the search reach: crush moves a node
+  // into its body, so the contact pushed it out (through the body, or dragged outward), spec §2-§5.
+  // The contact's forces acted, so delta-V stands; the crush there does not
+  for (int i = 0; i < sim.engine().body_count(); ++i) {
+    const NodeOutside out = FarthestOutsideRestBounds(sim.engine().model(i), sim.engine().state(i));
+    if (out.distance > sc.contact.toofar_maximum)
+      w->push_back({"crush_outside_outline", "bodies[" + std::to_string(i) + "]",
+                    Text("\"%s\": node %d ended %.3g m outside the body's undamaged bounds, farther than the contact "
+                         "search reaches (%.3g m): the contact moved it out of the body instead of crushing it "
+                         "in; the crush depths and profile there are not physical",
+                         s.bodies[i].name.c_str(), out.vertex, out.distance, sc.contact.toofar_maximum)});
   }
   // a pair's contact that left it closing along its impulse at over half its closing speed, once the
   // run is over (still in contact, or stopped early, the bodies may yet be stopped: the status says so)
