@@ -94,8 +94,8 @@ TEST(RunAssessment, CrushDeeperThanTheBodyIsLongIsWarned) {
     outside = outside || (w.code == "crush_outside_outline" && w.field == "bodies[0]");
   }
   EXPECT_TRUE(warned);
-  // its front nodes end ~12 in behind its back face, past the 6 in search reach; that warning alone
-  // leaves delta-V standing (an ensemble keeps the sample), the crush one voids the results
+  // its front nodes end ~12 in behind its back face, past the 6 in search reach; crush_outside_outline
+  // alone leaves delta-V standing (an ensemble keeps the sample), crush_beyond_length voids the results
   EXPECT_TRUE(outside);
   EXPECT_FALSE(WarningVoidsResults("crush_outside_outline"));
   EXPECT_TRUE(WarningVoidsResults("crush_beyond_length"));

@@ -131,8 +131,8 @@ Scenario BoxIntoOffsetPole(const std::string& search_direction) {
 // Known limit (README): with the local-average-normal search the box's own nodes and the pole's nodes
 // push the same faces back and forth, and nodes end far outside the box (36 in; the max crush reads
 // 161 in where the velocity search gives 37.6). Such a run is marked crush_outside_outline; the
-// velocity search's run of the same impact (its nodes end within 1 in of
-// the box's bounds, crush bulging round the pole) is not
+// velocity search's run of the same impact is not (its nodes end within 1 in of the box's bounds, crush
+// bulging round the pole)
 TEST(RoundPole, NodesPushedOutOfTheBoxAreMarked) {
   for (const std::string search : {"local_average_normal", "velocity"}) {
     const Scenario s = BoxIntoOffsetPole(search);
