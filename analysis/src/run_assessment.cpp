@@ -79,13 +79,12 @@ double RelativeKineticEnergyBefore(const Simulation& sim) {
   return energy;
 }
 
-// the vertex farthest outside the body's undamaged bounds (body frame) and how far [m]
+// the vertex farthest outside the body's undamaged bounds `rest` (body frame) and how far [m]
 struct NodeOutside {
   int vertex = -1;
   double distance = 0.0;
 };
-NodeOutside FarthestOutsideRestBounds(const BodyModel& model, const BodyState& state) {
-  const MeshStats rest = ComputeStats(model.mesh);
+NodeOutside FarthestOutsideRestBounds(const MeshStats& rest, const BodyState& state) {
   NodeOutside out;
   for (std::size_t v = 0; v < state.vertices.size(); ++v) {
     const Vec3& p = state.vertices[v];
@@ -144,21 +143,19 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                        "step unseen and the contact be missed; use at most %.3g s",
                        sc.bodies[g.fastest_a].name.c_str(), sc.bodies[g.fastest_b].name.c_str(),
                        g.relative_speed * sc.time_step, sc.contact.toofar_maximum, g.reach_step)});
-  // crush deeper than the body is long (x extent): the mesh was pushed through itself
   for (int i = 0; i < sim.engine().body_count(); ++i) {
-    const MeshStats m = ComputeStats(sim.engine().model(i).mesh);
-    const double length = m.max.x() - m.min.x();
+    // crush deeper than the body is long (x extent): the mesh was pushed through itself
+    const MeshStats rest = ComputeStats(sim.engine().model(i).mesh);
+    const double length = rest.max.x() - rest.min.x();
     if (s.bodies[i].max_crush > length)
       w->push_back({"crush_beyond_length", "bodies[" + std::to_string(i) + "]",
                     Text("\"%s\": maximum crush %.3g m exceeds the body's length %.3g m: the mesh was pushed "
                          "through itself; the crush law or the stiffness does not fit this body",
                          s.bodies[i].name.c_str(), s.bodies[i].max_crush, length)});
-  }
-  // a node ended beyond its body's undamaged bounds by more than the search reach: crush moves a node
-  // into its body, so the contact pushed it out (through the body, or dragged outward), spec §2-§5.
-  // The contact's forces acted, so delta-V stands; the crush there does not
-  for (int i = 0; i < sim.engine().body_count(); ++i) {
-    const NodeOutside out = FarthestOutsideRestBounds(sim.engine().model(i), sim.engine().state(i));
+    // a node ended beyond the body's undamaged bounds by more than the search reach: crush moves a node
+    // into its body, so the contact pushed it out (through the body, or dragged outward), spec §2-§5.
+    // The contact's forces acted, so delta-V stands; the crush there does not
+    const NodeOutside out = FarthestOutsideRestBounds(rest, sim.engine().state(i));
     if (out.distance > sc.contact.toofar_maximum)
       w->push_back({"crush_outside_outline", "bodies[" + std::to_string(i) + "]",
                     Text("\"%s\": node %d ended %.3g m outside the body's undamaged bounds, farther than the contact "
