@@ -99,8 +99,9 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
   };
   const ensemble::RunCounts c = RunOnRanks(spec, options);
   if (c.total == 0 && !c.finished) return kExitOk;  // an MPI worker rank: the master reports
-  out << Format("%s: %d samples (shard %d/%d): %d run now, %d resumed, %d failed (excluded from the statistics)\n",
-                request.spec_path.c_str(), c.total, options.shard, options.shards, c.ran, c.resumed, c.failed);
+  out << Format("%s: %d samples (shard %d/%d): %d run now, %d resumed, %d failed (excluded from the statistics), "
+                "%d kept with warnings\n",
+                request.spec_path.c_str(), c.total, options.shard, options.shards, c.ran, c.resumed, c.failed, c.warned);
   if (!c.finished) {
     err << "interrupted: the samples recorded so far are kept in " << request.out_dir
         << "/samples.journal.jsonl; run the same command again to resume\n";

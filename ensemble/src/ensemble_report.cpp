@@ -177,6 +177,18 @@ std::string FailedTable(const std::vector<SampleRecord>& records) {
   return t + "</tbody></table>\n";
 }
 
+// the samples in the statistics that carry warnings (their results stand; the warning says what to check)
+std::string WarnedTable(const std::vector<SampleRecord>& records) {
+  std::string t = "<table id=\"table-warned\"><thead><tr><th>sample</th><th>warnings</th></tr></thead><tbody>\n";
+  for (const SampleRecord& r : records) {
+    if (!r.in_statistics() || r.warnings.empty()) continue;
+    std::string codes;
+    for (const std::string& code : r.warnings) codes += (codes.empty() ? "" : ", ") + code;
+    t += "<tr><td>" + std::to_string(r.index) + "</td><td>" + XmlEscape(codes) + "</td></tr>\n";
+  }
+  return t + "</tbody></table>\n";
+}
+
 std::string SpecSection(const Spec& spec, int samples) {
   std::string s = "<h2 id=\"spec\">Spec and assumptions</h2>\n<p class=\"note\">spec " + XmlEscape(spec.file) + "; base scenario " +
                   XmlEscape(spec.scenario_file) + "; spec hash " + HashText(spec.hash) + "; seed " + std::to_string(spec.seed) +
@@ -232,6 +244,8 @@ std::string EnsembleReportHtml(const Spec& spec, const std::vector<SampleRecord>
     page += "</div>\n";
   }
   page += "<h2 id=\"failed\">Samples not in the statistics</h2>\n" + FailedTable(records);
+  page += "<h2 id=\"warned\">Samples in the statistics with warnings</h2>\n<p class=\"note\">Their delta-V and energies "
+          "stand; the warning names what is not physical (README, run warnings).</p>\n" + WarnedTable(records);
   page += SpecSection(spec, static_cast<int>(records.size()));
   return page + "</body>\n</html>\n";
 }

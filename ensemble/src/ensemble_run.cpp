@@ -183,7 +183,10 @@ class Collector {
       counts_.resumed = std::min(counts_.resumed, counts_.total);
     }
     counts_.ran = static_cast<int>(mine.size()) - counts_.resumed;
-    for (const auto& [index, r] : mine) counts_.failed += !r.in_statistics();
+    for (const auto& [index, r] : mine) {
+      counts_.failed += !r.in_statistics();
+      counts_.warned += r.in_statistics() && !r.warnings.empty();
+    }
     counts_.finished = static_cast<int>(mine.size()) == counts_.total;
     if (counts_.finished) {
       WriteResults(spec_, mine, dir_);

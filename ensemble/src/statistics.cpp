@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <numeric>
+#include <set>
 
 #include "dymesh/analysis/run_assessment.h"
 #include "dymesh/ensemble/random_stream.h"
@@ -306,18 +307,23 @@ std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& reco
   j["samples"] = records.size();
   // a stop tolerance that ended the run before its sample count
   if (spec.stop_relative > 0.0 && static_cast<int>(records.size()) < spec.samples) j["converged_at_samples"] = records.size();
-  // counts by status, and of the complete samples a warning voids: the rest enter the statistics
-  nlohmann::json counts = nlohmann::json::object(), voided = nlohmann::json::object();
+  // counts by status, and of the complete samples a warning voids: the rest enter the statistics,
+  // counted by the warnings they carry (each code once per sample)
+  nlohmann::json counts = nlohmann::json::object(), voided = nlohmann::json::object(), kept = nlohmann::json::object();
   int used = 0;
   for (const SampleRecord& r : records) {
     counts[r.status] = counts.value(r.status, 0) + 1;
     used += r.in_statistics();
-    if (r.status == RunStatusName(RunStatus::kComplete) && !r.in_statistics())
-      for (const std::string& code : r.warnings)
-        if (WarningVoidsResults(code)) voided[code] = voided.value(code, 0) + 1;
+    const std::set<std::string> codes(r.warnings.begin(), r.warnings.end());
+    for (const std::string& code : codes) {
+      if (r.in_statistics()) kept[code] = kept.value(code, 0) + 1;
+      else if (r.status == RunStatusName(RunStatus::kComplete) && WarningVoidsResults(code))
+        voided[code] = voided.value(code, 0) + 1;
+    }
   }
   j["status_counts"] = counts;
   j["voided_by_warning"] = voided;
+  j["kept_with_warning"] = kept;
   j["in_statistics"] = used;
   const auto stats = ComputeStatistics(records);
   for (const auto& [name, s] : stats) {

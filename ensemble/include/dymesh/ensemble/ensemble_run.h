@@ -21,6 +21,7 @@ struct RunCounts {
   int resumed = 0;     ///< found already recorded in the folder
   int ran = 0;         ///< run now
   int failed = 0;      ///< not in the statistics (SampleRecord::in_statistics)
+  int warned = 0;      ///< in the statistics, with warnings that leave the results standing
   bool finished = false;  ///< every sample of the shard has a record (samples.jsonl and ensemble.json written)
 };
 
