@@ -389,6 +389,9 @@ void MergeShards(const Spec& spec, const std::vector<std::string>& shard_dirs, c
     std::error_code error;
     if (!fs::is_regular_file(fs::path(shard) / kSamplesName, error))
       throw InputError(shard, kSamplesName, "missing: expected a shard folder holding samples.jsonl");
+    // the merged ensemble goes to its own folder: written into a shard, it would replace that shard's records
+    if (fs::equivalent(shard, out_dir, error))
+      throw InputError(out_dir, "--out", "is the shard folder " + shard + ": merge into a new folder");
     std::map<int, SampleRecord> part;
     ReadRecords(spec, fs::path(shard) / kSamplesName, &part);
     for (auto& [index, r] : part)

@@ -119,6 +119,14 @@ TEST_F(Ensemble, ThreeShardsMergedEqualOneRun) {
   const ProcessResult absent = Dymesh({"ensemble", "merge", spec, "--out", (dir_ / "m3").string(), merge[5], merge[6], merge[7], typo});
   EXPECT_EQ(absent.exit_code, 2);
   EXPECT_NE(absent.err.find(typo + ": samples.jsonl: missing"), std::string::npos) << absent.err;
+  // merged into one of its own shards (the path spelled another way): refused, the shard unchanged
+  const std::string shard2 = ReadFile(fs::path(merge[6]) / "samples.jsonl");
+  const std::string into_shard = (dir_ / "." / "shard2").string();
+  const ProcessResult own = Dymesh({"ensemble", "merge", spec, "--out", into_shard, merge[5], merge[6], merge[7]});
+  EXPECT_EQ(own.exit_code, 2);
+  EXPECT_NE(own.err.find(into_shard + ": --out: is the shard folder " + merge[6] + ": merge into a new folder"),
+            std::string::npos) << own.err;
+  EXPECT_EQ(ReadFile(fs::path(merge[6]) / "samples.jsonl"), shard2);
   // a shard run into the whole ensemble's folder (or another shard's) is refused and changes nothing:
   // finishing there would have rewritten samples.jsonl with the shard's records only
   const std::string whole_samples = ReadFile(dir_ / "whole" / "samples.jsonl");
