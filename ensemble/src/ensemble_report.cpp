@@ -183,7 +183,7 @@ std::string WarnedTable(const std::vector<SampleRecord>& records) {
   for (const SampleRecord& r : records) {
     if (!r.in_statistics() || r.warnings.empty()) continue;
     std::string codes;
-    for (const std::string& code : r.warnings) codes += (codes.empty() ? "" : ", ") + code;
+    for (const std::string& code : r.warning_codes()) codes += (codes.empty() ? "" : ", ") + code;
     t += "<tr><td>" + std::to_string(r.index) + "</td><td>" + XmlEscape(codes) + "</td></tr>\n";
   }
   return t + "</tbody></table>\n";

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <limits>
 #include <numeric>
-#include <set>
 
 #include "dymesh/analysis/run_assessment.h"
 #include "dymesh/ensemble/random_stream.h"
@@ -314,8 +313,7 @@ std::string EnsembleJson(const Spec& spec, const std::vector<SampleRecord>& reco
   for (const SampleRecord& r : records) {
     counts[r.status] = counts.value(r.status, 0) + 1;
     used += r.in_statistics();
-    const std::set<std::string> codes(r.warnings.begin(), r.warnings.end());
-    for (const std::string& code : codes) {
+    for (const std::string& code : r.warning_codes()) {
       if (r.in_statistics()) kept[code] = kept.value(code, 0) + 1;
       else if (r.status == RunStatusName(RunStatus::kComplete) && WarningVoidsResults(code))
         voided[code] = voided.value(code, 0) + 1;

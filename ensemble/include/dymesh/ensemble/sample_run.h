@@ -3,6 +3,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct SampleRecord {
   /// The run parted (status complete) and no warning voids its results (WarningVoidsResults): its
   /// outputs enter the statistics; any other sample is counted as failed.
   bool in_statistics() const;
+
+  /// Its warning codes, each once (a code two bodies carry counts once for the sample).
+  std::set<std::string> warning_codes() const { return {warnings.begin(), warnings.end()}; }
 };
 
 /// CRASH3 2-D coefficients of a preset from b0 and b1 (the preset's units): A = m b0 b1 / L,
