@@ -67,6 +67,7 @@ BodySummary SummarizeBody(const Simulation& sim, int i) {
 // the point of the impulse's line of action nearest the CG, from the impulse J and its moment H
 // about the CG (H = r x J): r = J x H / |J|^2 [m, earth frame]
 Vec3 LineOfAction(const Vec3& impulse, const Vec3& angular_impulse) {
+  if (impulse.squaredNorm() == 0.0) return Vec3::Zero();  // no load acted on the motion: at the CG
   return impulse.cross(angular_impulse) / impulse.squaredNorm();
 }
 
@@ -76,20 +77,39 @@ Vec3 PointVelocity(const RigidState& now, const RigidState& at, const Vec3& r) {
   return now.velocity + (rotation * now.omega).cross(rotation * (at.Rotation().transpose() * r));
 }
 
-// closing speed when the pair's contact began, separation speed at the end, along its impulse; at the
-// CGs and at the impact point
+// whether neither body of the pair moves vertically (planar or fixed): the vertical part of their
+// loads and moments other than about the vertical do not act on their motion
+bool HeightHeld(const Simulation& sim, const PairContact& c) {
+  auto held = [&](int i) {
+    const MotionModel m = sim.scenario().bodies[i].motion;
+    return m == MotionModel::kPlanar || m == MotionModel::kFixed;
+  };
+  return held(c.a) && held(c.b);
+}
+
+// a vector's part the pair's motion takes: horizontal when the height is held
+Vec3 Acting(const Vec3& v, bool horizontal) { return horizontal ? Vec3(v.x(), v.y(), 0.0) : v; }
+
+// closing speed when the pair's contact began, separation speed at the end, along its normal impulse
+// (friction tilts the whole impulse toward the slide: a car scraping along a wall would read as still
+// closing); at the CGs and at the impact point
 PairSummary SummarizePair(const Simulation& sim, const PairContact& c) {
   PairSummary p;
   p.a = c.a;
   p.b = c.b;
-  p.direction = c.impulse_on_a.normalized();
+  const bool planar = HeightHeld(sim, c);
+  const Vec3 normal = Acting(c.normal_impulse_on_a, planar);
+  p.direction = normal.squaredNorm() > 0.0 ? normal.normalized() : Vec3::Zero();
   const Sample& start = sim.history()[c.first_sample];
   const RigidState &a0 = start.bodies[c.a].rigid, &b0 = start.bodies[c.b].rigid;
   const RigidState &a1 = sim.engine().state(c.a).rigid, &b1 = sim.engine().state(c.b).rigid;
   p.closing_speed = -(a0.velocity - b0.velocity).dot(p.direction);
   p.separation_speed = (a1.velocity - b1.velocity).dot(p.direction);
-  const Vec3 r_a = LineOfAction(c.impulse_on_a, c.angular_impulse_on_a);
-  const Vec3 r_b = LineOfAction(-c.impulse_on_a, c.angular_impulse_on_b);
+  // the line of action of the loads that acted: in the plane, the yaw moments only
+  const Vec3 impulse = Acting(c.impulse_on_a, planar);
+  auto moment = [&](const Vec3& h) { return planar ? Vec3(0.0, 0.0, h.z()) : h; };
+  const Vec3 r_a = LineOfAction(impulse, moment(c.angular_impulse_on_a));
+  const Vec3 r_b = LineOfAction(-impulse, moment(c.angular_impulse_on_b));
   p.point_closing_speed = -(PointVelocity(a0, a0, r_a) - PointVelocity(b0, b0, r_b)).dot(p.direction);
   p.point_separation_speed = (PointVelocity(a1, a0, r_a) - PointVelocity(b1, b0, r_b)).dot(p.direction);
   p.contact_start = start.time;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dymesh/core/placement.h"
+#include "dymesh/core/separation.h"
 
 namespace dymesh {
 
@@ -66,11 +67,39 @@ bool Simulation::Advance() {
   time_ = steps_ * dt;
   NoteContact(step, dt);
   Record(&step);
-  // stop at the duration, or once contact has been over for the separation window
-  separated_ = scenario_.stop_at_separation && last_contact_time_ >= 0.0 &&
-               time_ - last_contact_time_ >= kSeparationWindow;
+  // stop at the duration, or once contact has been over for the separation window and no two bodies
+  // can meet again within the slap horizon (a car turning off a wall slaps it with its tail): asked
+  // again when they could first meet
+  if (scenario_.stop_at_separation && last_contact_time_ >= 0.0 && time_ - last_contact_time_ >= kSeparationWindow &&
+      time_ >= recheck_separation_) {
+    const double remaining = scenario_.duration - time_;
+    const double soonest = SoonestMeeting(std::min(remaining, kSlapHorizon), remaining);
+    separated_ = soonest == INFINITY;
+    recheck_separation_ = time_ + soonest;
+    // a later meeting before the duration is noted, not simulated (a secondary impact)
+    if (separated_ && remaining > kSlapHorizon) later_meeting_ = time_ + SoonestMeeting(remaining, remaining);
+  }
   finished_ = time_ >= scenario_.duration - 0.5 * dt || separated_;
   return !finished_;
+}
+
+double Simulation::SoonestMeeting(double touched_horizon, double remaining) const {
+  // bodies that hold their height, seen in plan (others: the separation window alone)
+  for (const BodySpec& b : scenario_.bodies)
+    if (b.motion != MotionModel::kPlanar && b.motion != MotionModel::kFixed) return INFINITY;
+  // every pair that can carry a load (two rigid bodies pass through each other), in free motion: a
+  // pair that has touched over `touched_horizon`, one yet to meet (the next car of a chain) to the end
+  double soonest = INFINITY;
+  for (int a = 0; a < engine_->body_count(); ++a)
+    for (int b = a + 1; b < engine_->body_count(); ++b) {
+      if (engine_->model(a).rigid && engine_->model(b).rigid) continue;
+      const bool touched = std::any_of(pair_contacts_.begin(), pair_contacts_.end(),
+                                       [&](const PairContact& c) { return c.a == a && c.b == b; });
+      soonest = std::min(soonest, dymesh::SoonestMeeting(engine_->state(a), engine_->state(b),
+                                                          touched ? touched_horizon : remaining,
+                                                          scenario_.contact.toofar_margin));
+    }
+  return soonest;
 }
 
 bool Simulation::Integrate(const StepResult& step, double dt) {
@@ -148,8 +177,10 @@ void Simulation::NoteContact(const StepResult& step, double dt) {
                               [&](const PairContact& c) { return c.a == p.body[0] && c.b == p.body[1]; });
     if (known == pair_contacts_.end())
       known = pair_contacts_.insert(pair_contacts_.end(),
-                                    {p.body[0], p.body[1], Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), history_.size() - 1});
+                                    {p.body[0], p.body[1], Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(),
+                                     history_.size() - 1});
     known->impulse_on_a += on_a * dt;
+    known->normal_impulse_on_a += p.normal_force[0] * dt;
     known->angular_impulse_on_a += (p.normal_moment[0] + p.friction_moment[0]) * dt;
     known->angular_impulse_on_b += (p.normal_moment[1] + p.friction_moment[1]) * dt;
   }
@@ -158,6 +189,7 @@ void Simulation::NoteContact(const StepResult& step, double dt) {
   if (!in_contact) return;
   if (first_contact_time_ < 0.0) first_contact_time_ = time_ - dt;
   last_contact_time_ = time_;
+  recheck_separation_ = 0.0;  // the contact changed the motion: a free-motion forecast no longer holds
 }
 
 void Simulation::Record(const StepResult* step) {

@@ -3,7 +3,7 @@
 #include <limits>
 #include <numeric>
 
-#include "dymesh/analysis/outline.h"
+#include "dymesh/core/outline.h"
 #include "dymesh/report/svg_plot.h"
 #include "report_parts.h"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "dymesh/analysis/outline.h"
+#include "dymesh/core/outline.h"
 #include "dymesh/report/svg_plot.h"
 #include "dymesh/core/units.h"
 #include "report_parts.h"

@@ -1,5 +1,5 @@
 // Plan outlines: convex hull and a mesh's outline at a pose.
-#include "dymesh/analysis/outline.h"
+#include "dymesh/core/outline.h"
 
 #include <gtest/gtest.h>
 

@@ -33,10 +33,11 @@ struct BodySummary {
   CrushProfile crush_profile;    ///< CRASH3-style C1..C6 on the damaged face
 };
 
-/// One pair's collision, along the impulse the pair exchanged.
+/// One pair's collision, along the normal impulse the pair exchanged (horizontal when neither body
+/// moves vertically: planar or fixed).
 struct PairSummary {
   int a = 0, b = 1;                   ///< scenario body indices, a < b
-  Vec3 direction{0, 0, 0};            ///< unit earth-frame impulse b gave a
+  Vec3 direction{0, 0, 0};            ///< unit earth-frame normal impulse b gave a
   double closing_speed = 0.0;         ///< [m/s] of a toward b along `direction`'s reverse, when the contact began
   double separation_speed = 0.0;      ///< [m/s] of a away from b along `direction`, at the end of the run
   /// [m/s] the same at the impact point: the material points of a and b on the impulse's line of action
@@ -64,8 +65,8 @@ struct Summary {
   /// the main collision: the pair with the largest impulse (-1 without contact); the two fields
   /// below repeat its speeds
   int main_pair = -1;
-  double closing_speed = 0.0;         ///< [m/s] along the impulse direction (main pair)
-  double separation_speed = 0.0;      ///< [m/s] along the impulse direction (main pair)
+  double closing_speed = 0.0;         ///< [m/s] along the normal impulse direction (main pair)
+  double separation_speed = 0.0;      ///< [m/s] along the normal impulse direction (main pair)
   double contact_start = -1.0, contact_end = -1.0;  ///< [s]
   int steps = 0;
   double end_time = 0.0;              ///< [s] time reached

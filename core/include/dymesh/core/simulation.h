@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -36,6 +37,7 @@ struct Sample {
 struct PairContact {
   int a = 0, b = 1;
   Vec3 impulse_on_a{0, 0, 0};  ///< [N s] earth frame, the collision impulse b gave a (normal and friction)
+  Vec3 normal_impulse_on_a{0, 0, 0};  ///< [N s] earth frame, its normal part (along the master surfaces' normals)
   Vec3 angular_impulse_on_a{0, 0, 0};  ///< [N m s] earth frame, its moment about a's CG, summed over the steps
   Vec3 angular_impulse_on_b{0, 0, 0};  ///< [N m s] earth frame, the moment of a's on b about b's CG
   std::size_t first_sample = 0;  ///< history index of the state at which the pair's contact began
@@ -44,6 +46,12 @@ struct PairContact {
 /// Bodies with no collision load for this long after contact have separated [s]; also the window
 /// over which a run at rest in contact must show no growing force.
 inline constexpr double kSeparationWindow = 0.02;
+
+/// How far ahead [s] the stop at separation looks for bodies turning or moving back into each other
+/// (a car turning off a wall slaps it with its tail). The forecast is free motion: no tyre or ground
+/// forces, which over 0.2 s change a car's speed by at most about 1.4 m/s (0.7 g); a meeting later
+/// than that is a secondary impact whose path the tyres decide, not this collision's.
+inline constexpr double kSlapHorizon = 0.2;
 
 /// A run of a scenario; owns everything it touches (no global state).
 class Simulation {
@@ -87,7 +95,8 @@ class Simulation {
   /// True when the run stopped because a pose or velocity went non-finite; the state and history
   /// are those of the last finite step.
   bool failed_numerics() const { return failed_numerics_; }
-  /// True when the run ended on the separation rule (contact over for the separation window).
+  /// True when the run ended on the separation rule: contact over for the separation window, and no
+  /// two bodies able to meet again within kSlapHorizon (or the duration) in free motion (SoonestMeeting).
   bool separated() const { return separated_; }
   /// True when the last step carried a collision load.
   bool in_contact_at_end() const { return steps_ > 0 && last_contact_time_ == time_; }
@@ -97,6 +106,9 @@ class Simulation {
   const std::vector<PairPlacement>& placements() const { return placements_; }
   double time() const { return time_; }
   double first_contact_time() const { return first_contact_time_; }
+  /// When bodies stopped at separation may meet again in free motion before the duration [s] (a
+  /// secondary impact beyond kSlapHorizon, not simulated); infinity when they cannot.
+  double later_meeting_time() const { return later_meeting_; }
   double last_contact_time() const { return last_contact_time_; }
   /// Every pair that carried a collision load, in the order their contact began.
   const std::vector<PairContact>& pair_contacts() const { return pair_contacts_; }
@@ -106,6 +118,7 @@ class Simulation {
   bool Integrate(const StepResult& step, double dt);
   void AcceptHostStates(const std::vector<RigidState>& states);
   void NoteContact(const StepResult& step, double dt);
+  double SoonestMeeting(double touched_horizon, double remaining) const;
 
   Scenario scenario_;
   std::unique_ptr<ContactEngine> engine_;
@@ -115,6 +128,8 @@ class Simulation {
   int steps_ = 0;
   double time_ = 0.0;
   double first_contact_time_ = -1.0, last_contact_time_ = -1.0;
+  double recheck_separation_ = 0.0;  // [s] before this no two bodies can meet in free motion
+  double later_meeting_ = INFINITY;  // [s] when stopped bodies may meet again before the duration
   bool finished_ = false, failed_numerics_ = false, separated_ = false;
   std::unique_ptr<StepResult> host_pending_;  // force-provider mode: the step the host is integrating
   double host_step_ = 0.0;                    // force-provider mode: the step length while it is uniform

@@ -1,4 +1,4 @@
-#include "dymesh/analysis/outline.h"
+#include "dymesh/core/outline.h"
 
 #include <algorithm>
 

@@ -5,7 +5,8 @@
 
 #include "dymesh/core/body.h"
 
-/// Plan-view outlines of bodies: the convex hull of a mesh projected on the earth x-y plane.
+/// Plan-view outlines of bodies: the convex hull of a mesh projected on the earth x-y plane (the
+/// report's plan views; the stop at separation's forecast).
 namespace dymesh {
 
 using Vec2 = Eigen::Vector2d;

@@ -1,0 +1,105 @@
+#include "dymesh/core/separation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "dymesh/core/outline.h"
+
+namespace dymesh {
+namespace {
+
+// most poses tried before the test gives up and says the bodies may meet
+constexpr int kMaxPoses = 200;
+
+// a unit plan direction turned by an angle
+Vec2 Turned(const Vec2& d, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * d.x() - s * d.y(), s * d.x() + c * d.y()};
+}
+
+// a body in plan: its outline about the CG (earth frame, now) and its free motion
+struct PlanBody {
+  std::vector<Vec2> hull;             // [m] earth-frame offsets from the CG
+  Vec2 position, velocity;            // [m], [m/s] CG
+  double yaw_rate = 0.0;              // [rad/s] about the vertical
+  double radius = 0.0;                // [m] farthest outline point from the CG
+};
+
+PlanBody Plan(const BodyState& s) {
+  const Mat3 r = s.rigid.Rotation();
+  std::vector<Vec2> offsets;
+  offsets.reserve(s.vertices.size());
+  for (const Vec3& v : s.vertices) offsets.push_back((r * v).head<2>());
+  PlanBody b{ConvexHull(std::move(offsets)), s.rigid.position.head<2>(), s.rigid.velocity.head<2>(), (r * s.rigid.omega).z()};
+  for (const Vec2& q : b.hull) b.radius = std::max(b.radius, q.norm());
+  return b;
+}
+
+// the outline's earth-frame points after t seconds of free motion
+std::vector<Vec2> PosedOutline(const PlanBody& b, double t) {
+  const Vec2 centre = b.position + b.velocity * t;
+  std::vector<Vec2> out;
+  out.reserve(b.hull.size());
+  for (const Vec2& q : b.hull) out.push_back(centre + Turned(q, b.yaw_rate * t));
+  return out;
+}
+
+// [m] signed distance of point p from a convex counter-clockwise outline: the largest distance out
+// past one of its edges (negative inside: minus the depth; outside, at most the true distance)
+double OutsideBy(const Vec2& p, const std::vector<Vec2>& outline) {
+  double out = -INFINITY;
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const Vec2& e0 = outline[i];
+    const Vec2 edge = outline[(i + 1) % outline.size()] - e0;
+    const Vec2 normal(edge.y(), -edge.x());  // outward for counter-clockwise
+    out = std::max(out, (p - e0).dot(normal) / normal.norm());
+  }
+  return out;
+}
+
+// [m] every outline corner's distance out of the other outline after t seconds of free motion: a's
+// corners against b, then b's against a
+std::vector<double> Clearances(const PlanBody& a, const PlanBody& b, double t) {
+  const std::vector<Vec2> outline_a = PosedOutline(a, t), outline_b = PosedOutline(b, t);
+  std::vector<double> out;
+  out.reserve(outline_a.size() + outline_b.size());
+  for (const Vec2& p : outline_a) out.push_back(OutsideBy(p, outline_b));
+  for (const Vec2& p : outline_b) out.push_back(OutsideBy(p, outline_a));
+  return out;
+}
+
+}  // namespace
+
+double SoonestMeeting(const BodyState& a, const BodyState& b, double horizon, double deepening) {
+  const PlanBody pa = Plan(a), pb = Plan(b);
+  if (pa.hull.size() < 3 || pb.hull.size() < 3) return INFINITY;  // no outline in plan (a vertical sheet)
+  // each corner's clearance to hold: out of the other outline; a corner inside it now (the bodies
+  // interlock where they crushed, and no node there carries load) may not go `deepening` deeper
+  std::vector<double> floor = Clearances(pa, pb, 0.0);
+  for (double& f : floor) f = f > 0.0 ? 0.0 : f - deepening;
+  // the fastest a corner of each body can move against the other's outline, in the other's frame:
+  // the relative CG speed, its own turn, and the other's turn about a point at most `reach` away
+  const double speed = (pb.velocity - pa.velocity).norm();
+  const double reach = (pb.position - pa.position).norm() + speed * horizon;
+  const double rate_a = speed + std::abs(pa.yaw_rate) * pa.radius + std::abs(pb.yaw_rate) * (reach + pa.radius);
+  const double rate_b = speed + std::abs(pb.yaw_rate) * pb.radius + std::abs(pa.yaw_rate) * (reach + pb.radius);
+  if (rate_a <= 0.0 && rate_b <= 0.0) return INFINITY;
+  // conservative advancement: each corner's margin over its floor is safe for margin / rate; pose the
+  // outlines after the shortest such time and go on, until the horizon or a margin is used up
+  double t = 0.0;
+  for (int pose = 0; pose < kMaxPoses; ++pose) {
+    const std::vector<double> clearance = Clearances(pa, pb, t);
+    double safe = INFINITY;
+    for (std::size_t i = 0; i < clearance.size(); ++i) {
+      const double margin = clearance[i] - floor[i], rate = i < pa.hull.size() ? rate_a : rate_b;
+      if (margin <= 0.0) return t;
+      if (rate > 0.0) safe = std::min(safe, margin / rate);
+    }
+    t += safe;
+    if (t >= horizon) return INFINITY;
+  }
+  return t;
+}
+
+}  // namespace dymesh
