@@ -88,6 +88,22 @@ bool IsObjNumber(const std::string& token) {
          digits <= kMaxObjDigits;
 }
 
+// a "v" line's numbers: x y z, x y z w (w = 1) or x y z r g b, each read whole ("" when sound). assimp 5.2
+// drops a vertex with a number written from a bare point (".5"; "-.5" and "0.5" read), shifting every
+// later index, misreads 5 or 7 numbers the same way, and divides x, y and z by w
+std::string ObjVertexProblem(const std::vector<std::string>& numbers) {
+  const std::size_t n = numbers.size();
+  if (n != 3 && n != 4 && n != 6)
+    return "expected a vertex \"v x y z\", \"v x y z w\" or \"v x y z r g b\", got " + std::to_string(n) + " numbers";
+  for (const std::string& t : numbers) {
+    if (!IsObjNumber(t)) return "expected a number, got \"" + t + "\"";
+    if (t.front() == '.') return "expected a digit before the point (0" + t + "), got \"" + t + "\"";
+  }
+  if (n == 4 && std::strtod(numbers[3].c_str(), nullptr) != 1.0)
+    return "expected w = 1 (assimp divides x, y and z by w), got \"" + numbers[3] + "\"";
+  return "";
+}
+
 // an OBJ face corner: v, v/vt, v//vn or v/vt/vn, each a (possibly negative) nonzero integer
 bool IsObjCorner(const std::string& token) {
   std::istringstream parts(token);
@@ -117,9 +133,7 @@ void CheckObjLines(const std::string& path, const std::string& field) {
     while (tokens >> token) rest.push_back(token);
     const std::string at = At(number, line);
     if (keyword == "v") {
-      if (rest.size() < 3 || rest.size() > 7) throw InputError(path, field, at + ": expected a vertex \"v x y z\"");
-      for (const std::string& t : rest)
-        if (!IsObjNumber(t)) throw InputError(path, field, at + ": expected a number, got \"" + t + "\"");
+      if (const std::string problem = ObjVertexProblem(rest); !problem.empty()) throw InputError(path, field, at + ": " + problem);
     } else if (keyword == "f") {
       if (rest.size() < 3) throw InputError(path, field, at + ": expected a face of at least three vertices");
       // assimp's triangulation of one polygon is quadratic in its corners (100,000 took 38 s)

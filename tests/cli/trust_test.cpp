@@ -398,6 +398,36 @@ TEST_F(Trust, MalformedObjLinesAreRefusedWithTheLine) {
   EXPECT_TRUE(Has(nul.err, "bodies[0].mesh.file: expected a file name (no NUL character)")) << nul.err;
 }
 
+// assimp 5.2 drops a vertex with a coordinate written from a bare point (".5") or with 5 or 7 numbers,
+// shifting every later index (the mesh was built wrong, exit 0), and divides x, y, z by a w (found
+// by fuzzing, 2026-11-26): refused with the line and the token; the forms it reads run
+TEST_F(Trust, ObjVerticesAssimpMisreadsAreRefusedWithTheLine) {
+  const std::string box = BoxObj(1);
+  const std::string rest = box.substr(box.find("v 1 0 0"));
+  const struct {
+    const char* first;
+    const char* message;
+  } cases[] = {
+      {"v .5 0 0\n", "line 1 (\"v .5 0 0\"): expected a digit before the point (0.5), got \".5\""},
+      {"v 0 .5 0\n", "line 1 (\"v 0 .5 0\"): expected a digit before the point (0.5), got \".5\""},
+      {"v 0 0 .5\n", "line 1 (\"v 0 0 .5\"): expected a digit before the point (0.5), got \".5\""},
+      {"v 0 0 0 1 0\n", "line 1 (\"v 0 0 0 1 0\"): expected a vertex \"v x y z\", \"v x y z w\" or \"v x y z r g b\", got 5 numbers"},
+      {"v 0 0 0 1 0 0 1\n", "line 1 (\"v 0 0 0 1 0 0 1\"): expected a vertex \"v x y z\", \"v x y z w\" or \"v x y z r g b\", got 7 numbers"},
+      {"v 0 0 0 2\n", "line 1 (\"v 0 0 0 2\"): expected w = 1 (assimp divides x, y and z by w), got \"2\""},
+  };
+  for (const auto& c : cases) {
+    Write("v.obj", c.first + rest);
+    const ProcessResult r = Run(WithCarMesh("v.obj"));
+    EXPECT_EQ(r.exit_code, 2) << c.first;
+    EXPECT_TRUE(Has(r.err, std::string("v.obj: bodies[0].mesh.file: ") + c.message)) << r.err;
+  }
+  // w = 1, a colour, a signed point and a trailing point read as written
+  Write("ok.obj", "v -.0 +.0 0. 1\nv 1 0 0 0.5 0.5 1\n" + box.substr(box.find("v 1 1 0")));
+  const ProcessResult ok = Dymesh({"check", Write("s.json", WithCarMesh("ok.obj").dump())});
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(Has(ok.out, "vertices 8, triangles 12")) << ok.out;
+}
+
 TEST_F(Trust, VehicleFileErrorSaysWhichScenarioBodyUsesIt) {
   Write("bad_vehicle.json", R"({"units": "US", "mass": -1})");
   Json j = BoxScenario();
