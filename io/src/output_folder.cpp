@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -69,15 +70,28 @@ void CheckWritable(const std::string& dir) {
   unlink(probe.c_str());
 }
 
-// every output name and its temporary fit the folder's name limit
+// the names the run writes in the folder: its outputs, the lock and the manifest
+std::vector<std::string> WrittenNames(std::vector<std::string> outputs) {
+  outputs.push_back(kLockFileName);
+  outputs.push_back(kManifestFileName);
+  return outputs;
+}
+
+// every output name and its temporary fit the folder's name limit, and their paths the system's
+// path limit (an over-long path failed only after the whole run, exit 1)
 void CheckNames(const std::string& dir, const std::vector<std::string>& names) {
   const long limit = pathconf(dir.c_str(), _PC_NAME_MAX);
   const std::size_t max = limit > 0 ? static_cast<std::size_t>(limit) : 255;
-  for (const std::string& name : names)
+  for (const std::string& name : names) {
     if (name.size() + kTemporaryNameExtra > max)
       Refuse(dir, "output file name \"" + name + "\" is " + std::to_string(name.size()) +
                       " bytes; this folder allows " + std::to_string(max - kTemporaryNameExtra) +
                       " (with the temporary suffix): shorten the body name");
+    const std::size_t path = (fs::path(dir) / name).string().size() + kTemporaryNameExtra;
+    if (path >= PATH_MAX)
+      Refuse(dir, "the path of output \"" + name + "\" (with the temporary suffix) is " + std::to_string(path) +
+                      " bytes; the system allows " + std::to_string(PATH_MAX - 1) + ": give a shorter --out");
+  }
 }
 
 // a manifest entry dymesh may remove: a plain name in this folder, never a path, of a kind dymesh
@@ -122,8 +136,8 @@ OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outp
 }
 
 void OutputFolder::TakeFolder() {
+  CheckNames(dir_, WrittenNames(outputs_));
   CheckWritable(dir_);
-  CheckNames(dir_, outputs_);
   RefuseOtherKind(dir_, outputs_);
   // exclusive for the whole run; the kernel releases it if the process dies
   const std::string lock = (fs::path(dir_) / kLockFileName).string();

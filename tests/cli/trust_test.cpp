@@ -6,7 +6,9 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include "../ensemble/box_spec.h"
 #include "cli_fixture.h"
 #include "coarse_boxes.h"
 #include "process.h"
@@ -536,6 +539,18 @@ TEST_F(Trust, ReusedFolderKeepsOnlyTheNewRunsFilesAndForeignFiles) {
   std::ofstream(dir_ / "out" / ".dymesh-manifest", std::ios::app) << "notes.txt\n";
   ASSERT_EQ(Run(BoxScenario()).exit_code, 0);
   EXPECT_EQ(ReadFile(dir_ / "out" / "notes.txt"), "mine");
+}
+
+// found by fuzzing (2026-11-26): an --out whose outputs' paths pass PATH_MAX failed after the whole
+// run (exit 1), leaving its folders, its lock and a manifest of files never written
+TEST_F(Trust, OutPathTooLongForTheSystemIsRefusedBeforeRunning) {
+  fs::path out = dir_;
+  while (out.string().size() < PATH_MAX - 25) out /= std::string(std::min<std::size_t>(200, PATH_MAX - 25 - out.string().size()), 'd');
+  const ProcessResult r = Dymesh({"run", Write("s.json", BoxScenario().dump()), "--quiet", "--out", out.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "--out: the path of output \"car_undeformed.obj\" (with the temporary suffix) is ")) << r.err;
+  EXPECT_TRUE(Has(r.err, ": give a shorter --out")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / std::string(200, 'd')));
 }
 
 TEST_F(Trust, SecondRunIntoABusyFolderIsRefused) {
