@@ -13,6 +13,7 @@
 
 #include "dymesh/io/atomic_file.h"
 #include "dymesh/core/scenario.h"
+#include "dymesh/io/scenario_json.h"
 
 namespace dymesh {
 namespace {
@@ -94,6 +95,23 @@ void CheckNames(const std::string& dir, const std::vector<std::string>& names) {
   }
 }
 
+// the folder holds an entry of that name (a dangling link too)
+bool Holds(const std::string& dir, const std::string& name) {
+  std::error_code ec;
+  return fs::exists(fs::symlink_status(fs::path(dir) / name, ec));
+}
+
+// no name the run writes is a FIFO, a folder, a device or a socket: opening a FIFO blocks the run,
+// and the others cannot be replaced
+void RefuseNonRegularFiles(const std::string& dir, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    if (!Holds(dir, name)) continue;
+    const std::string problem = NotARegularFile((fs::path(dir) / name).string());
+    if (!problem.empty() && problem != "file not found")
+      Refuse(dir, "holds \"" + name + "\", " + problem + ": remove it or choose another folder");
+  }
+}
+
 // a manifest entry dymesh may remove: a plain name in this folder, never a path, of a kind dymesh
 // writes (a manifest edited to name another file does not remove it)
 bool PlainName(const std::string& name) {
@@ -110,10 +128,7 @@ void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& out
   auto has = [](const std::vector<std::string>& names, const char* name) {
     return std::find(names.begin(), names.end(), name) != names.end();
   };
-  auto holds = [&](const char* name) {
-    std::error_code ec;
-    return fs::exists(fs::path(dir) / name, ec);
-  };
+  auto holds = [&](const char* name) { return Holds(dir, name); };
   const bool run = has(outputs, "summary.json"), ensemble = has(outputs, "samples.jsonl");
   if (run && (holds("samples.jsonl") || holds("samples.journal.jsonl") || holds("ensemble.json")))
     Refuse(dir, "holds an ensemble's results (samples.jsonl, ensemble.json): give another folder for a single run");
@@ -136,9 +151,11 @@ OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outp
 }
 
 void OutputFolder::TakeFolder() {
-  CheckNames(dir_, WrittenNames(outputs_));
+  const std::vector<std::string> names = WrittenNames(outputs_);
+  CheckNames(dir_, names);
   CheckWritable(dir_);
   RefuseOtherKind(dir_, outputs_);
+  RefuseNonRegularFiles(dir_, names);
   // exclusive for the whole run; the kernel releases it if the process dies
   const std::string lock = (fs::path(dir_) / kLockFileName).string();
   lock_fd_ = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);

@@ -541,6 +541,33 @@ TEST_F(Trust, ReusedFolderKeepsOnlyTheNewRunsFilesAndForeignFiles) {
   EXPECT_EQ(ReadFile(dir_ / "out" / "notes.txt"), "mine");
 }
 
+// found by fuzzing (2026-11-26): a FIFO with the manifest's or an output's name made the run hang
+TEST_F(Trust, FifoWithAnOutputNameIsRefusedWithoutBlocking) {
+  fs::create_directories(dir_ / "out");
+  ASSERT_EQ(mkfifo((dir_ / "out" / ".dymesh-manifest").c_str(), 0644), 0);
+  const ProcessResult r = Dymesh({"run", Write("s.json", BoxScenario().dump()), "--quiet", "--out", (dir_ / "out").string()}, 30.0);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "out: --out: holds \".dymesh-manifest\", a FIFO (named pipe), not a file")) << r.err;
+  fs::create_directories(dir_ / "e");
+  ASSERT_EQ(mkfifo((dir_ / "e" / "samples.jsonl").c_str(), 0644), 0);
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_ / "spec", 2);
+  const ProcessResult ensemble = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e").string()}, 30.0);
+  EXPECT_EQ(ensemble.exit_code, 2) << ensemble.err;
+  EXPECT_TRUE(Has(ensemble.err, "holds \"samples.jsonl\", a FIFO (named pipe), not a file")) << ensemble.err;
+}
+
+// found by fuzzing (2026-11-26): an --out whose outputs' paths pass PATH_MAX failed after the whole
+// run (exit 1), leaving its folders, its lock and a manifest of files never written
+TEST_F(Trust, OutPathTooLongForTheSystemIsRefusedBeforeRunning) {
+  fs::path out = dir_;
+  while (out.string().size() < PATH_MAX - 25) out /= std::string(std::min<std::size_t>(200, PATH_MAX - 25 - out.string().size()), 'd');
+  const ProcessResult r = Dymesh({"run", Write("s.json", BoxScenario().dump()), "--quiet", "--out", out.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "--out: the path of output \"car_undeformed.obj\" (with the temporary suffix) is ")) << r.err;
+  EXPECT_TRUE(Has(r.err, ": give a shorter --out")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / std::string(200, 'd')));
+}
+
 // found by fuzzing (2026-11-26): an --out whose outputs' paths pass PATH_MAX failed after the whole
 // run (exit 1), leaving its folders, its lock and a manifest of files never written
 TEST_F(Trust, OutPathTooLongForTheSystemIsRefusedBeforeRunning) {

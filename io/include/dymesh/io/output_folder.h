@@ -20,7 +20,8 @@ inline constexpr const char* kManifestFileName = ".dymesh-manifest";
 class OutputFolder {
  public:
   /// Creates `dir` when missing, checks that it is a writable folder and that every name of
-  /// `outputs` (plain file names) fits its name and path limits with the temporary suffix, and takes an
+  /// `outputs` (plain file names) fits its name and path limits with the temporary suffix and is not
+  /// held there by a FIFO, a folder, a device or a socket (a FIFO would block the run), and takes an
   /// exclusive lock on it. Throws InputError (field "--out") naming the folder and the reason, or
   /// OutputFolderBusy when another run holds it.
   OutputFolder(const std::string& dir, std::vector<std::string> outputs);
