@@ -136,13 +136,14 @@ class Collector {
  public:
   Collector(const Spec& spec, const RunOptions& options)
       : spec_(spec), options_(options), dir_(options.out_dir),
-        folder_(options.out_dir, {kSamplesName, kStatisticsName, kJournalName, kReportName}) {
+        folder_(options.out_dir, {kSamplesName, kStatisticsName, kJournalName, kReportName}, spec.input_files) {
     // what the folder already holds (a finished run, or the journal of a stopped one)
     ReadRecords(spec, dir_ / kSamplesName, &records_);
     ReadRecords(spec, dir_ / kJournalName, &records_);
     // a sample that ran over the time limit runs again (the limit is the machine's, not the spec's)
     for (auto it = records_.begin(); it != records_.end();) it = it->second.status == kTimedOut ? records_.erase(it) : std::next(it);
     RefuseOtherShards(options, records_);
+    folder_.RecordOutputs();
     for (int i = options.shard - 1; i < spec.samples; i += options.shards) {
       ++counts_.total;
       if (records_.count(i)) ++counts_.resumed;
@@ -401,7 +402,8 @@ void MergeShards(const Spec& spec, const std::vector<std::string>& shard_dirs, c
   for (int i = 0; i < spec.samples; ++i)
     if (!records.count(i))
       throw InputError(out_dir, kSamplesName, "sample " + std::to_string(i) + " is in no shard: run it, then merge again");
-  OutputFolder folder(out_dir, {kSamplesName, kStatisticsName, kReportName});
+  OutputFolder folder(out_dir, {kSamplesName, kStatisticsName, kReportName}, spec.input_files);
+  folder.RecordOutputs();
   WriteResults(spec, records, fs::path(out_dir));
 }
 

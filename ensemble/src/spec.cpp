@@ -414,6 +414,8 @@ Spec LoadSpec(const std::string& path) {
   spec.scenario_file = base.lexically_normal().string();
   spec.scenario_text = ReadText(spec.scenario_file, path, "scenario");
   const Scenario base_scenario = LoadScenario(spec.scenario_file);  // the base must be valid on its own
+  spec.input_files = InputFiles(base_scenario);
+  spec.input_files.push_back(path);
   const Json scenario_json = Json::parse(spec.scenario_text);
   // inputs, design, size, seed, thresholds
   const Json& inputs = r.Require(j, "", "inputs");

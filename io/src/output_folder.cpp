@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "dymesh/io/atomic_file.h"
 #include "dymesh/core/scenario.h"
@@ -112,6 +113,39 @@ void RefuseNonRegularFiles(const std::string& dir, const std::vector<std::string
   }
 }
 
+// the names the folder's manifest lists (none without a manifest)
+std::set<std::string> ManifestNames(const std::string& dir) {
+  std::ifstream in(fs::path(dir) / kManifestFileName);
+  std::set<std::string> names;
+  for (std::string name; std::getline(in, name);) names.insert(name);
+  return names;
+}
+
+// `file` is one of the inputs (the same file, however its path is spelt or linked)
+bool IsInput(const fs::path& file, const std::vector<std::string>& inputs) {
+  std::error_code ec;
+  return std::any_of(inputs.begin(), inputs.end(), [&](const std::string& input) { return fs::equivalent(file, input, ec); });
+}
+
+// no name the run writes replaces a file the run reads (a scenario saved as summary.json, a mesh
+// named like a deformed mesh, an ensemble's base scenario named samples.jsonl)
+void RefuseReplacedInputs(const std::string& dir, const std::vector<std::string>& names, const std::vector<std::string>& inputs) {
+  for (const std::string& name : names)
+    if (Holds(dir, name) && IsInput(fs::path(dir) / name, inputs))
+      Refuse(dir, "the output \"" + name + "\" would replace an input file of this run: move the input out of the "
+                  "folder or choose another folder");
+}
+
+// an output name held by a file no earlier dymesh run listed in the manifest is the user's: replacing
+// (or, for an ensemble's journal, deleting) it would lose it
+void RefuseUnrecordedFiles(const std::string& dir, const std::vector<std::string>& outputs) {
+  const std::set<std::string> recorded = ManifestNames(dir);
+  for (const std::string& name : outputs)
+    if (Holds(dir, name) && !recorded.count(name))
+      Refuse(dir, "holds \"" + name + "\", which no earlier dymesh run wrote (it is not in " + kManifestFileName +
+                      "): move it or choose another folder");
+}
+
 // a manifest entry dymesh may remove: a plain name in this folder, never a path, of a kind dymesh
 // writes (a manifest edited to name another file does not remove it)
 bool PlainName(const std::string& name) {
@@ -138,8 +172,8 @@ void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& out
 
 }  // namespace
 
-OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs)
-    : dir_(dir), outputs_(std::move(outputs)) {
+OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs, std::vector<std::string> inputs)
+    : dir_(dir), outputs_(std::move(outputs)), inputs_(std::move(inputs)) {
   if (dir_.empty()) throw InputError("command line", "--out", "expected a folder name, got \"\"");
   created_ = EnsureFolder(dir_);
   try {
@@ -166,6 +200,9 @@ void OutputFolder::TakeFolder() {
     throw OutputFolderBusy(dir_ + ": --out: another dymesh run is writing into this folder (it holds " + lock +
                            "): wait for it to finish or choose another folder");
   }
+  // what is in the folder, once no other run changes it
+  RefuseReplacedInputs(dir_, names, inputs_);
+  RefuseUnrecordedFiles(dir_, outputs_);
 }
 
 OutputFolder::~OutputFolder() {
@@ -174,20 +211,21 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::ReplacePreviousRun() {
-  const fs::path manifest = fs::path(dir_) / kManifestFileName;
-  // the previous run's files, as it recorded them
-  std::ifstream previous(manifest);
-  std::string name;
-  while (std::getline(previous, name)) {
+  // the previous run's files, as it recorded them; one this run reads stays
+  for (const std::string& name : ManifestNames(dir_)) {
     if (!PlainName(name)) continue;
     std::error_code ec;
     const fs::path file = fs::path(dir_) / name;
-    if (fs::is_regular_file(fs::symlink_status(file, ec))) fs::remove(file, ec);
+    if (fs::is_regular_file(fs::symlink_status(file, ec)) && !IsInput(file, inputs_)) fs::remove(file, ec);
   }
-  // this run's, before any of them is written
+  RecordOutputs();
+}
+
+void OutputFolder::RecordOutputs() {
+  // this run's files, before any of them is written
   std::string text;
   for (const std::string& output : outputs_) text += output + "\n";
-  WriteFileAtomically(manifest.string(), text);
+  WriteFileAtomically((fs::path(dir_) / kManifestFileName).string(), text);
 }
 
 }  // namespace dymesh

@@ -841,6 +841,14 @@ std::string NotARegularFile(const std::string& path) {
   }
 }
 
+std::vector<std::string> InputFiles(const Scenario& scenario) {
+  std::vector<std::string> files = {scenario.file};
+  for (const BodySpec& body : scenario.bodies)
+    for (const std::string& file : {body.vehicle_file, body.mesh.file})
+      if (!file.empty()) files.push_back(file);
+  return files;
+}
+
 Scenario LoadScenario(const std::string& path) {
   if (const std::string problem = NotARegularFile(path); !problem.empty())
     throw InputError(path, "(file)", problem + ": " + path);
