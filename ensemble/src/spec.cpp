@@ -15,6 +15,7 @@
 #include "dymesh/ensemble/sample_run.h"
 #include "dymesh/ensemble/sobol_sequence.h"
 #include "dymesh/io/json_document.h"
+#include "dymesh/io/printable.h"
 #include "dymesh/io/scenario_json.h"
 
 namespace dymesh::ensemble {
@@ -34,8 +35,9 @@ std::string JoinNames(const Names& names) {
 // what the spec is read from, for messages
 struct Reader {
   std::string file;
+  // field and message as printable text: a key or a value from the spec may hold control bytes
   [[noreturn]] void Fail(const std::string& field, const std::string& message) const {
-    throw InputError(file, field, message);
+    throw InputError(file, Printable(field), Printable(message));
   }
   const Json& Require(const Json& object, const std::string& path, const char* key) const {
     if (!object.is_object() || !object.contains(key)) Fail(path.empty() ? key : path + "." + key, "missing required key");

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <vector>
 
+#include "dymesh/io/printable.h"
 #include "dymesh/io/scenario_json.h"
 
 namespace dymesh {
@@ -74,7 +75,7 @@ bool NextDataLine(std::istream& in, bool skip_comments, long* number, std::strin
 
 // "line N ("...")" for messages
 std::string At(long number, const std::string& line) {
-  return "line " + std::to_string(number) + " (\"" + line.substr(0, 60) + "\")";
+  return "line " + std::to_string(number) + " (\"" + Printable(line.substr(0, 60)) + "\")";
 }
 
 // an OBJ number token read whole ("0,1" or "1abc" are not numbers; assimp reads their prefix), with at

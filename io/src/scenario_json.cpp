@@ -2,6 +2,7 @@
 
 #include "dymesh/io/json_document.h"
 #include "dymesh/io/mesh_import.h"
+#include "dymesh/io/printable.h"
 
 #include <nlohmann/json.hpp>
 
@@ -70,8 +71,9 @@ struct Source {
   std::vector<RunWarning>* warnings = nullptr;  // the scenario's: implausible values land here
 };
 
+// field and message as printable text: a key or a value from the file may hold control bytes
 [[noreturn]] void Fail(const Source& src, const std::string& field, const std::string& message) {
-  throw InputError(src.file, field, message);
+  throw InputError(src.file, Printable(field), Printable(message));
 }
 
 // ---------------------------------------------------------------------------------------------

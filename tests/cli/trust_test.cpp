@@ -431,6 +431,39 @@ TEST_F(Trust, ObjVerticesAssimpMisreadsAreRefusedWithTheLine) {
   EXPECT_TRUE(Has(ok.out, "vertices 8, triangles 12")) << ok.out;
 }
 
+// found by fuzzing (2026-11-26): the JSON library ends the text at a NUL byte, so "{...}\0garbage" was
+// accepted (scenario, vehicle file, ensemble spec); a message was cut at a NUL in a key and printed a
+// CR-only OBJ file's line raw
+TEST_F(Trust, NulBytesAndControlBytesAreRefusedAndShownEscaped) {
+  const std::string scenario = BoxScenario().dump();
+  const ProcessResult trailing = Dymesh({"check", Write("s.json", scenario + std::string(1, '\0') + "garbage")});
+  EXPECT_EQ(trailing.exit_code, 2) << trailing.err;
+  EXPECT_TRUE(Has(trailing.err, "s.json: (json): malformed JSON at byte " + std::to_string(scenario.size()) +
+                                    ": a NUL byte; expected JSON text, and nothing after the document")) << trailing.err;
+  Write("vehicle.json", std::string(R"({"units": "US", "weight": 3000})") + '\0' + "x");
+  Json j = BoxScenario();
+  j["bodies"][0]["vehicle"] = "vehicle.json";
+  const ProcessResult vehicle = Dymesh({"check", Write("v.json", j.dump())});
+  EXPECT_EQ(vehicle.exit_code, 2) << vehicle.err;
+  EXPECT_TRUE(Has(vehicle.err, "vehicle.json: (json): malformed JSON at byte 31: a NUL byte")) << vehicle.err;
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_ / "e", 2);
+  std::ofstream(spec, std::ios::app) << '\0' << "{}";
+  const ProcessResult ensemble = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e" / "out").string()});
+  EXPECT_EQ(ensemble.exit_code, 2) << ensemble.err;
+  EXPECT_TRUE(Has(ensemble.err, "spec.json: (json): malformed JSON at byte ")) << ensemble.err;
+  // control bytes from the file are escaped: the whole message is shown, and no CR rewrites the line
+  Json key = BoxScenario();
+  key[std::string("un") + '\0' + "its"] = "US";
+  const ProcessResult nul_key = Dymesh({"check", Write("k.json", key.dump())});
+  EXPECT_EQ(nul_key.exit_code, 2) << nul_key.err;
+  EXPECT_TRUE(Has(nul_key.err, "k.json: un\\x00its: unknown key \"un\\x00its\"; allowed keys: ")) << nul_key.err;
+  Write("cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+  const ProcessResult cr = Run(WithCarMesh("cr.obj"));
+  EXPECT_EQ(cr.exit_code, 2) << cr.err;
+  EXPECT_TRUE(Has(cr.err, "line 1 (\"v 0 0 0\\rv 1 0 0\\rv 0 1 0\\rf 1 2 3\\r\")")) << cr.err;
+  EXPECT_FALSE(Has(cr.err, "\r")) << cr.err;
+}
+
 TEST_F(Trust, VehicleFileErrorSaysWhichScenarioBodyUsesIt) {
   Write("bad_vehicle.json", R"({"units": "US", "mass": -1})");
   Json j = BoxScenario();
