@@ -728,10 +728,9 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   body.name = ReadString(src, Require(src, j, path, "name"), Join(path, "name"));
   if (body.name.empty()) Fail(src, Join(path, "name"), "expected a non-empty string, got \"\"");
   // the name becomes output file names (NAME_deformed.obj, ...)
-  const bool control = std::any_of(body.name.begin(), body.name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; });
-  if (control || body.name.find_first_of("/\\") != std::string::npos || body.name == "." || body.name == "..")
+  if (HasControlCharacter(body.name) || body.name.find_first_of("/\\") != std::string::npos || body.name == "." || body.name == "..")
     Fail(src, Join(path, "name"),
-         "expected a name usable in file names (no /, \\ or control characters), got " + Describe(j["name"]));
+         "expected a name usable in file names (no /, \\ or control characters, DEL and U+0080..U+009F included), got " + Describe(j["name"]));
   // vehicle file first, then this body's own fields
   BodyFields fields;
   if (const Json* v = Find(j, "vehicle")) fields = LoadVehicle(src, *v, Join(path, "vehicle"), &body.vehicle_file);

@@ -13,8 +13,10 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "../ensemble/box_spec.h"
 #include "cli_fixture.h"
@@ -462,6 +464,44 @@ TEST_F(Trust, NulBytesAndControlBytesAreRefusedAndShownEscaped) {
   EXPECT_EQ(cr.exit_code, 2) << cr.err;
   EXPECT_TRUE(Has(cr.err, "line 1 (\"v 0 0 0\\rv 1 0 0\\rv 0 1 0\\rf 1 2 3\\r\")")) << cr.err;
   EXPECT_FALSE(Has(cr.err, "\r")) << cr.err;
+}
+
+// the fields of a CSV line, read as RFC 4180 says (a quoted field may hold commas and doubled quotes)
+std::vector<std::string> CsvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"') fields.back() += line[++i];
+    else if (line[i] == '"') quoted = !quoted;
+    else if (line[i] == ',' && !quoted) fields.emplace_back();
+    else fields.back() += line[i];
+  }
+  return fields;
+}
+
+// found by fuzzing (2026-11-26): a comma in a body name shifted history.csv's header against its data,
+// DEL and C1 controls in a body name were accepted, and a scenario name with a control character
+// made report.html malformed XML
+TEST_F(Trust, BodyNamesQuotedInTheCsvAndControlCharactersRefused) {
+  Json j = BoxScenario();
+  j["bodies"][0]["name"] = "car, \"blue\"";
+  j["name"] = std::string("box\x01 into wall");
+  ASSERT_EQ(Run(j).exit_code, 0);
+  std::istringstream csv(ReadFile(dir_ / "out" / "history.csv"));
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_EQ(CsvFields(header).size(), CsvFields(row).size()) << header;
+  EXPECT_EQ(CsvFields(header)[1], "car, \"blue\".x[in]") << header;
+  const std::string html = ReadFile(dir_ / "out" / "report.html");
+  EXPECT_TRUE(Has(html, "<title>box\\x01 into wall - DyMESH report</title>")) << html.substr(0, 300);
+  for (const std::string name : {std::string("car\x7f"), std::string("car\u0085"), std::string("car\x1b")}) {
+    j["bodies"][0]["name"] = name;
+    const ProcessResult r = Run(j);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_TRUE(Has(r.err, "s.json: bodies[0].name: expected a name usable in file names (no /, \\ or control "
+                           "characters, DEL and U+0080..U+009F included), got ")) << r.err;
+  }
 }
 
 TEST_F(Trust, VehicleFileErrorSaysWhichScenarioBodyUsesIt) {
