@@ -78,6 +78,16 @@ std::string At(long number, const std::string& line) {
   return "line " + std::to_string(number) + " (\"" + Printable(line.substr(0, 60)) + "\")";
 }
 
+// a PLY or OFF file ends with the data its header counts: a further line (an extra face) was ignored
+// without a word
+void RefuseDataPastCounts(std::istream& in, bool skip_comments, long number, const std::string& path,
+                          const std::string& field) {
+  std::string line;
+  if (NextDataLine(in, skip_comments, &number, &line))
+    throw InputError(path, field, At(number, line) + ": data past the header's counts; expected the end of the file "
+                                                     "(or counts that include it)");
+}
+
 // an OBJ number token read whole ("0,1" or "1abc" are not numbers; assimp reads their prefix), with at
 // most kMaxObjDigits digits before its point (assimp's reader overflowed a 25-digit integer to 0)
 bool IsObjNumber(const std::string& token) {
@@ -285,6 +295,7 @@ void CheckPly(const std::string& path, const std::string& field) {
       if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
         throw InputError(path, field, At(number, line) + ": " + problem);
     }
+  RefuseDataPastCounts(in, false, number, path, field);
 }
 
 void CheckOff(const std::string& path, const std::string& field) {
@@ -313,6 +324,37 @@ void CheckOff(const std::string& path, const std::string& field) {
     if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
       throw InputError(path, field, At(number, line) + ": " + problem);
   }
+  RefuseDataPastCounts(in, true, number, path, field);
+}
+
+// a binary STL: 84 bytes of header and count, then 50 bytes per triangle (the count must fill the
+// file exactly; an ASCII file may begin "solid" too)
+bool IsBinaryStl(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[84] = {};
+  if (!in.read(head, sizeof head)) return false;
+  std::uint32_t count = 0;
+  for (int i = 0; i < 4; ++i) count |= std::uint32_t{static_cast<unsigned char>(head[80 + i])} << (8 * i);
+  return std::filesystem::file_size(path) == 84 + 50 * std::uint64_t{count} || std::string(head, 5) != "solid";
+}
+
+// an ASCII STL's facets hold three vertices each between "outer loop" and "endloop" (assimp dropped a
+// fourth vertex without a word)
+void CheckAsciiStl(const std::string& path, const std::string& field) {
+  if (IsBinaryStl(path)) return;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  int corners = 0;
+  for (long number = 1; std::getline(in, line); ++number) {
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword == "outer") corners = 0;
+    if (keyword == "vertex" && ++corners > 3)
+      throw InputError(path, field, At(number, line) + ": a facet's fourth vertex; expected three (triangulate it first)");
+    if (keyword == "endloop" && corners != 3)
+      throw InputError(path, field, At(number, line) + ": a facet of " + std::to_string(corners) + " vertices; expected three");
+  }
 }
 
 }  // namespace
@@ -322,6 +364,7 @@ void CheckMeshText(const std::string& path, const std::string& field) {
   if (extension == ".obj") CheckObjLines(path, field);
   if (extension == ".ply") CheckPly(path, field);
   if (extension == ".off") CheckOff(path, field);
+  if (extension == ".stl") CheckAsciiStl(path, field);
 }
 
 }  // namespace dymesh

@@ -504,6 +504,31 @@ TEST_F(Trust, BodyNamesQuotedInTheCsvAndControlCharactersRefused) {
   }
 }
 
+// found by fuzzing (2026-11-26): assimp ignored a PLY's or an OFF's line past its header's counts (an
+// extra face) and dropped the fourth vertex of an ASCII STL facet, without a word
+TEST_F(Trust, MeshDataPastTheCountsOrAFacetsFourthVertexIsRefusedWithTheLine) {
+  const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";
+  const std::string faces = "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n"
+                            "3 3 0 4\n3 3 4 7\n";
+  Write("box.off", "OFF\n8 12 0\n" + vertices + faces + "3 0 1 2\n");
+  const ProcessResult off = Run(WithCarMesh("box.off"));
+  EXPECT_EQ(off.exit_code, 2) << off.err;
+  EXPECT_TRUE(Has(off.err, "box.off: bodies[0].mesh.file: line 23 (\"3 0 1 2\"): data past the header's counts")) << off.err;
+  Write("box.ply", "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+                   "element face 12\nproperty list uchar int vertex_indices\nend_header\n" + vertices + faces + "3 0 1 2\n");
+  const ProcessResult ply = Run(WithCarMesh("box.ply"));
+  EXPECT_EQ(ply.exit_code, 2) << ply.err;
+  EXPECT_TRUE(Has(ply.err, "box.ply: bodies[0].mesh.file: line 30 (\"3 0 1 2\"): data past the header's counts")) << ply.err;
+  Write("quad.stl", "solid q\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 1 1 0\n"
+                    "   vertex 0 1 0\n  endloop\n endfacet\nendsolid q\n");
+  const ProcessResult stl = Run(WithCarMesh("quad.stl"));
+  EXPECT_EQ(stl.exit_code, 2) << stl.err;
+  EXPECT_TRUE(Has(stl.err, "quad.stl: bodies[0].mesh.file: line 7 (\"   vertex 0 1 0\"): a facet's fourth vertex; expected three")) << stl.err;
+  // the same files without the extra line or vertex are read
+  Write("box.off", "OFF\n8 12 0\n" + vertices + faces);
+  EXPECT_EQ(Dymesh({"check", Write("s.json", WithCarMesh("box.off").dump())}).exit_code, 0);
+}
+
 TEST_F(Trust, VehicleFileErrorSaysWhichScenarioBodyUsesIt) {
   Write("bad_vehicle.json", R"({"units": "US", "mass": -1})");
   Json j = BoxScenario();
