@@ -719,6 +719,37 @@ TEST_F(Trust, OutPathTooLongForTheSystemIsRefusedBeforeRunning) {
   EXPECT_FALSE(fs::exists(dir_ / std::string(200, 'd')));
 }
 
+// found by fuzzing (2026-11-26): journal and shard records of the wrong types gave the JSON library's
+// raw message or were accepted ("warnings": 5), and a junk last line of a shard was merged unsaid
+TEST_F(Trust, EnsembleRecordsOfTheWrongTypesAreRefusedOrRunAgain) {
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_ / "spec", 2);
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e").string()}).exit_code, 0);
+  const std::string samples = ReadFile(dir_ / "e" / "samples.jsonl");
+  const std::string first = samples.substr(0, samples.find('\n'));
+  // a journal record of the wrong type is left out: its sample runs again, to the same bytes
+  Json bad = Json::parse(first);
+  bad["warnings"] = 5;
+  fs::create_directories(dir_ / "j");
+  fs::create_directories(dir_ / "s");
+  Write("j/samples.journal.jsonl", bad.dump() + "\n");
+  Write("j/.dymesh-manifest", "samples.journal.jsonl\n");
+  const ProcessResult journal = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "j").string()});
+  EXPECT_EQ(journal.exit_code, 0) << journal.err;
+  EXPECT_EQ(ReadFile(dir_ / "j" / "samples.jsonl"), samples);
+  // a shard's record of the wrong type is refused naming the file, the line and the field
+  bad = Json::parse(first);
+  bad["bodies"][0]["delta_v"] = "fast";
+  Write("s/samples.jsonl", samples.substr(samples.find('\n') + 1) + bad.dump() + "\n");
+  const ProcessResult merge = Dymesh({"ensemble", "merge", spec, "--out", (dir_ / "m").string(), (dir_ / "s").string()});
+  EXPECT_EQ(merge.exit_code, 2) << merge.err;
+  EXPECT_TRUE(Has(merge.err, "s/samples.jsonl: line 2: bodies[0].delta_v: expected a number (not a sample record of this spec")) << merge.err;
+  // a junk last line of a finished folder's samples.jsonl
+  std::ofstream(dir_ / "e" / "samples.jsonl", std::ios::app) << "{\"index\": 1\n";
+  const ProcessResult junk = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e").string()});
+  EXPECT_EQ(junk.exit_code, 2) << junk.err;
+  EXPECT_TRUE(Has(junk.err, "e/samples.jsonl: line 3: expected a JSON object with \"index\" and \"status\"")) << junk.err;
+}
+
 TEST_F(Trust, SecondRunIntoABusyFolderIsRefused) {
   // another run holds the folder (its lock, taken here as dymesh takes it)
   fs::create_directories(dir_ / "out");
