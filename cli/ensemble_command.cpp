@@ -130,7 +130,7 @@ int EnsembleReplayCommand(const std::string& spec_path, int samples, int index, 
   const Scenario scenario = ensemble::SampleScenario(spec, values);
   std::vector<std::string> names = OutputFileNames(scenario);
   names.push_back("record.json");
-  OutputFolder folder(out_dir, names);
+  OutputFolder folder(out_dir, names, spec.input_files);
   Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
   sim.Run();
   folder.ReplacePreviousRun();

@@ -430,7 +430,7 @@ dm_status dm_world_write_outputs(dm_world* w, const char* dir) {
     NotNull(w, "world");
     NotNull(dir, "dir");
     const dymesh::Simulation& sim = *w->sim;
-    dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(sim.scenario()));
+    dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(sim.scenario()), dymesh::InputFiles(sim.scenario()));
     folder.ReplacePreviousRun();
     dymesh::WriteOutputs(sim, dymesh::Summarize(sim), dir);
   });

@@ -25,6 +25,7 @@
 #include "dymesh/ensemble/statistics.h"
 #include "dymesh/io/atomic_file.h"
 #include "dymesh/io/output_folder.h"
+#include "dymesh/io/printable.h"
 
 #ifdef DYMESH_WITH_MPI
 #include <mpi.h>
@@ -40,14 +41,16 @@ constexpr const char* kStatisticsName = "ensemble.json";
 constexpr const char* kJournalName = "samples.journal.jsonl";
 constexpr const char* kReportName = "report.html";
 
-// the valid records of `file` (a missing file has none); a record of another spec is refused
-void ReadRecords(const Spec& spec, const fs::path& file, std::map<int, SampleRecord>* records) {
+// the valid records of `file` (a missing file has none); a record of another spec is refused, and so
+// is any other line of a file written whole (samples.jsonl: a line there that is not a record was
+// edited or damaged; a journal's is left out, so its sample runs again)
+void ReadRecords(const Spec& spec, const fs::path& file, std::map<int, SampleRecord>* records, bool whole_file) {
   std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
+  std::string line, problem;
+  for (long number = 1; std::getline(in, line); ++number) {
     if (line.empty()) continue;
     SampleRecord r;
-    if (ParseRecord(spec, line, &r)) {
+    if (ParseRecord(spec, line, &r, &problem)) {
       // a later record of a sample replaces one that timed out (a resume ran it again)
       if (r.index >= 0 && r.index < spec.samples) {
         const auto [it, fresh] = records->emplace(r.index, r);
@@ -61,6 +64,9 @@ void ReadRecords(const Spec& spec, const fs::path& file, std::map<int, SampleRec
       throw InputError(file.string(), "spec_hash",
                        "the folder holds samples of another spec (not " + HashText(spec.hash) +
                            "): use another --out, or remove the folder to start again");
+    if (whole_file)
+      throw InputError(file.string(), "line " + std::to_string(number),
+                       Printable(problem) + " (not a sample record of this spec: the file was edited or damaged)");
   }
 }
 
@@ -136,13 +142,14 @@ class Collector {
  public:
   Collector(const Spec& spec, const RunOptions& options)
       : spec_(spec), options_(options), dir_(options.out_dir),
-        folder_(options.out_dir, {kSamplesName, kStatisticsName, kJournalName, kReportName}) {
+        folder_(options.out_dir, {kSamplesName, kStatisticsName, kJournalName, kReportName}, spec.input_files) {
     // what the folder already holds (a finished run, or the journal of a stopped one)
-    ReadRecords(spec, dir_ / kSamplesName, &records_);
-    ReadRecords(spec, dir_ / kJournalName, &records_);
+    ReadRecords(spec, dir_ / kSamplesName, &records_, true);
+    ReadRecords(spec, dir_ / kJournalName, &records_, false);
     // a sample that ran over the time limit runs again (the limit is the machine's, not the spec's)
     for (auto it = records_.begin(); it != records_.end();) it = it->second.status == kTimedOut ? records_.erase(it) : std::next(it);
     RefuseOtherShards(options, records_);
+    folder_.RecordOutputs();
     for (int i = options.shard - 1; i < spec.samples; i += options.shards) {
       ++counts_.total;
       if (records_.count(i)) ++counts_.resumed;
@@ -393,7 +400,7 @@ void MergeShards(const Spec& spec, const std::vector<std::string>& shard_dirs, c
     if (fs::equivalent(shard, out_dir, error))
       throw InputError(out_dir, "--out", "is the shard folder " + shard + ": merge into a new folder");
     std::map<int, SampleRecord> part;
-    ReadRecords(spec, fs::path(shard) / kSamplesName, &part);
+    ReadRecords(spec, fs::path(shard) / kSamplesName, &part, true);
     for (auto& [index, r] : part)
       if (!records.emplace(index, r).second)
         throw InputError(shard, kSamplesName, "sample " + std::to_string(index) + " is in more than one shard");
@@ -401,7 +408,8 @@ void MergeShards(const Spec& spec, const std::vector<std::string>& shard_dirs, c
   for (int i = 0; i < spec.samples; ++i)
     if (!records.count(i))
       throw InputError(out_dir, kSamplesName, "sample " + std::to_string(i) + " is in no shard: run it, then merge again");
-  OutputFolder folder(out_dir, {kSamplesName, kStatisticsName, kReportName});
+  OutputFolder folder(out_dir, {kSamplesName, kStatisticsName, kReportName}, spec.input_files);
+  folder.RecordOutputs();
   WriteResults(spec, records, fs::path(out_dir));
 }
 

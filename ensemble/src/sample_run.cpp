@@ -145,15 +145,64 @@ SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& v
   return ParseOwnRecord(spec, record.dump());
 }
 
-bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
+namespace {
+
+// a record field missing or of the wrong type, named by its JSON path
+struct RecordFieldError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// j[key] as a number (j[key][index] with an index), or RecordFieldError naming `path`
+double RecordNumber(const Json& j, const std::string& key, const std::string& path, int index = -1) {
+  const Json* v = j.is_object() && j.contains(key) ? &j[key] : nullptr;
+  if (v && index >= 0) v = v->is_array() && static_cast<int>(v->size()) > index ? &(*v)[index] : nullptr;
+  if (!v || !v->is_number())
+    throw RecordFieldError(path + (index >= 0 ? "[" + std::to_string(index) + "]" : "") + ": expected a number");
+  return v->get<double>();
+}
+
+// the warning codes, the inputs and, for a sample in the statistics, each body's figures
+void ReadRecordFields(const Spec& spec, const Json& j, SampleRecord* out) {
+  const Json& warnings = j.contains("warnings") ? j["warnings"] : Json::array();
+  if (!warnings.is_array()) throw RecordFieldError("warnings: expected an array of warning codes");
+  for (const Json& w : warnings) {
+    if (!w.is_string()) throw RecordFieldError("warnings: expected an array of warning codes");
+    out->warnings.push_back(w.get<std::string>());
+  }
+  if (j.contains("inputs"))
+    for (const Input& in : spec.inputs) out->inputs.push_back(RecordNumber(j["inputs"], in.name, "inputs." + in.name));
+  if (!out->in_statistics() || !j.contains("bodies")) return;
+  if (!j["bodies"].is_array()) throw RecordFieldError("bodies: expected an array");
+  for (std::size_t i = 0; i < j["bodies"].size(); ++i) {
+    const Json& b = j["bodies"][i];
+    const std::string path = "bodies[" + std::to_string(i) + "].";
+    if (!b.is_object() || !b.contains("name") || !b["name"].is_string()) throw RecordFieldError(path + "name: expected a string");
+    const std::string name = b["name"].get<std::string>();
+    for (const char* q : kOutputQuantities) out->outputs[name + "." + q] = out->observables[name + "." + q] = RecordNumber(b, q, path + q);
+    // what evidence may be measured on besides (kMeasuredQuantities): the crush profile and the rest position
+    for (int c = 0; c < 6; ++c) out->observables[name + ".c" + std::to_string(c + 1)] = RecordNumber(b, "c", path + "c", c);
+    out->observables[name + ".rest_x"] = RecordNumber(b, "final_position", path + "final_position", 0);
+    out->observables[name + ".rest_y"] = RecordNumber(b, "final_position", path + "final_position", 1);
+    out->observables[name + ".rest_heading"] = RecordNumber(b, "final_heading_deg", path + "final_heading_deg");
+  }
+}
+
+}  // namespace
+
+bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out, std::string* problem) {
+  std::string ignored;
+  std::string& why = problem ? *problem : ignored;
   const Json j = Json::parse(line, nullptr, false);
+  why = "expected a JSON object with \"index\" and \"status\"";
   if (j.is_discarded() || !j.is_object() || !j.contains("index") || !j.contains("status")) return false;
-  if (j.value("spec_hash", "") != HashText(spec.hash)) return false;
+  why = "spec_hash: expected " + HashText(spec.hash);
+  if (!j.contains("spec_hash") || j["spec_hash"] != HashText(spec.hash)) return false;
   // a status this engine writes (a record edited by hand, or from another engine, is not one)
   const Json& status = j["status"];
   bool known = status == kFailedInput || status == kTimedOut;
   for (RunStatus s : {RunStatus::kComplete, RunStatus::kEndedInContact, RunStatus::kInterrupted, RunStatus::kFailedNumerics})
     known = known || status == RunStatusName(s);
+  why = known ? "index: expected a whole number" : "status: expected a status this engine writes";
   if (!known || !j["index"].is_number_integer()) return false;
   out->index = j["index"].get<int>();
   out->status = j["status"].get<std::string>();
@@ -162,23 +211,13 @@ bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out) {
   out->observables.clear();
   out->inputs.clear();
   out->warnings.clear();
-  if (j.contains("warnings") && j["warnings"].is_array())
-    for (const Json& w : j["warnings"])
-      if (w.is_string()) out->warnings.push_back(w.get<std::string>());
-  if (j.contains("inputs"))
-    for (const Input& in : spec.inputs) out->inputs.push_back(j["inputs"].value(in.name, 0.0));
-  if (out->in_statistics() && j.contains("bodies")) {
-    for (const Json& b : j["bodies"]) {
-      const std::string name = b["name"].get<std::string>();
-      for (const char* q : kOutputQuantities)
-        out->outputs[name + "." + q] = out->observables[name + "." + q] = b[q].get<double>();
-      // what evidence may be measured on besides (kMeasuredQuantities): the crush profile and the rest position
-      for (int c = 0; c < 6; ++c) out->observables[name + ".c" + std::to_string(c + 1)] = b["c"][c].get<double>();
-      out->observables[name + ".rest_x"] = b["final_position"][0].get<double>();
-      out->observables[name + ".rest_y"] = b["final_position"][1].get<double>();
-      out->observables[name + ".rest_heading"] = b["final_heading_deg"].get<double>();
-    }
+  try {
+    ReadRecordFields(spec, j, out);
+  } catch (const RecordFieldError& e) {
+    why = e.what();
+    return false;
   }
+  why.clear();
   return true;
 }
 

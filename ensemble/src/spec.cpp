@@ -15,6 +15,7 @@
 #include "dymesh/ensemble/sample_run.h"
 #include "dymesh/ensemble/sobol_sequence.h"
 #include "dymesh/io/json_document.h"
+#include "dymesh/io/printable.h"
 #include "dymesh/io/scenario_json.h"
 
 namespace dymesh::ensemble {
@@ -34,8 +35,9 @@ std::string JoinNames(const Names& names) {
 // what the spec is read from, for messages
 struct Reader {
   std::string file;
+  // field and message as printable text: a key or a value from the spec may hold control bytes
   [[noreturn]] void Fail(const std::string& field, const std::string& message) const {
-    throw InputError(file, field, message);
+    throw InputError(file, Printable(field), Printable(message));
   }
   const Json& Require(const Json& object, const std::string& path, const char* key) const {
     if (!object.is_object() || !object.contains(key)) Fail(path.empty() ? key : path + "." + key, "missing required key");
@@ -414,6 +416,8 @@ Spec LoadSpec(const std::string& path) {
   spec.scenario_file = base.lexically_normal().string();
   spec.scenario_text = ReadText(spec.scenario_file, path, "scenario");
   const Scenario base_scenario = LoadScenario(spec.scenario_file);  // the base must be valid on its own
+  spec.input_files = InputFiles(base_scenario);
+  spec.input_files.push_back(path);
   const Json scenario_json = Json::parse(spec.scenario_text);
   // inputs, design, size, seed, thresholds
   const Json& inputs = r.Require(j, "", "inputs");

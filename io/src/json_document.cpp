@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "dymesh/core/scenario.h"
+#include "dymesh/io/printable.h"
 #include "json_path.h"
 
 namespace dymesh {
@@ -120,10 +121,14 @@ class PathTrackingBuilder {
 }  // namespace
 
 Json ParseJsonDocument(const std::string& text, const std::string& file) {
+  // the JSON library ends the text at a NUL byte: "{...}\0garbage" would read as the object alone
+  if (const auto nul = text.find('\0'); nul != std::string::npos)
+    throw InputError(file, "(json)", "malformed JSON at byte " + std::to_string(nul) +
+                                         ": a NUL byte; expected JSON text, and nothing after the document");
   Json root;
   PathTrackingBuilder builder(&root);
   const bool ok = Json::sax_parse(text, &builder);
-  if (!ok) throw InputError(file, builder.error_field(), builder.error_message());
+  if (!ok) throw InputError(file, Printable(builder.error_field()), Printable(builder.error_message()));
   return root;
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <vector>
 
+#include "dymesh/io/printable.h"
 #include "dymesh/io/scenario_json.h"
 
 namespace dymesh {
@@ -74,7 +75,17 @@ bool NextDataLine(std::istream& in, bool skip_comments, long* number, std::strin
 
 // "line N ("...")" for messages
 std::string At(long number, const std::string& line) {
-  return "line " + std::to_string(number) + " (\"" + line.substr(0, 60) + "\")";
+  return "line " + std::to_string(number) + " (\"" + Printable(line.substr(0, 60)) + "\")";
+}
+
+// a PLY or OFF file ends with the data its header counts: a further line (an extra face) was ignored
+// without a word
+void RefuseDataPastCounts(std::istream& in, bool skip_comments, long number, const std::string& path,
+                          const std::string& field) {
+  std::string line;
+  if (NextDataLine(in, skip_comments, &number, &line))
+    throw InputError(path, field, At(number, line) + ": data past the header's counts; expected the end of the file "
+                                                     "(or counts that include it)");
 }
 
 // an OBJ number token read whole ("0,1" or "1abc" are not numbers; assimp reads their prefix), with at
@@ -86,6 +97,22 @@ bool IsObjNumber(const std::string& token) {
   const auto digits = std::count_if(mantissa.begin(), mantissa.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
   return !token.empty() && end == token.c_str() + token.size() && token.find_first_of("xX") == std::string::npos &&
          digits <= kMaxObjDigits;
+}
+
+// a "v" line's numbers: x y z, x y z w (w = 1) or x y z r g b, each read whole ("" when sound). assimp 5.2
+// drops a vertex with a number written from a bare point (".5"; "-.5" and "0.5" read), shifting every
+// later index, misreads 5 or 7 numbers the same way, and divides x, y and z by w
+std::string ObjVertexProblem(const std::vector<std::string>& numbers) {
+  const std::size_t n = numbers.size();
+  if (n != 3 && n != 4 && n != 6)
+    return "expected a vertex \"v x y z\", \"v x y z w\" or \"v x y z r g b\", got " + std::to_string(n) + " numbers";
+  for (const std::string& t : numbers) {
+    if (!IsObjNumber(t)) return "expected a number, got \"" + t + "\"";
+    if (t.front() == '.') return "expected a digit before the point (0" + t + "), got \"" + t + "\"";
+  }
+  if (n == 4 && std::strtod(numbers[3].c_str(), nullptr) != 1.0)
+    return "expected w = 1 (assimp divides x, y and z by w), got \"" + numbers[3] + "\"";
+  return "";
 }
 
 // an OBJ face corner: v, v/vt, v//vn or v/vt/vn, each a (possibly negative) nonzero integer
@@ -117,9 +144,7 @@ void CheckObjLines(const std::string& path, const std::string& field) {
     while (tokens >> token) rest.push_back(token);
     const std::string at = At(number, line);
     if (keyword == "v") {
-      if (rest.size() < 3 || rest.size() > 7) throw InputError(path, field, at + ": expected a vertex \"v x y z\"");
-      for (const std::string& t : rest)
-        if (!IsObjNumber(t)) throw InputError(path, field, at + ": expected a number, got \"" + t + "\"");
+      if (const std::string problem = ObjVertexProblem(rest); !problem.empty()) throw InputError(path, field, at + ": " + problem);
     } else if (keyword == "f") {
       if (rest.size() < 3) throw InputError(path, field, at + ": expected a face of at least three vertices");
       // assimp's triangulation of one polygon is quadratic in its corners (100,000 took 38 s)
@@ -270,6 +295,7 @@ void CheckPly(const std::string& path, const std::string& field) {
       if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
         throw InputError(path, field, At(number, line) + ": " + problem);
     }
+  RefuseDataPastCounts(in, false, number, path, field);
 }
 
 void CheckOff(const std::string& path, const std::string& field) {
@@ -298,6 +324,37 @@ void CheckOff(const std::string& path, const std::string& field) {
     if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
       throw InputError(path, field, At(number, line) + ": " + problem);
   }
+  RefuseDataPastCounts(in, true, number, path, field);
+}
+
+// a binary STL: 84 bytes of header and count, then 50 bytes per triangle (the count must fill the
+// file exactly; an ASCII file may begin "solid" too)
+bool IsBinaryStl(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[84] = {};
+  if (!in.read(head, sizeof head)) return false;
+  std::uint32_t count = 0;
+  for (int i = 0; i < 4; ++i) count |= std::uint32_t{static_cast<unsigned char>(head[80 + i])} << (8 * i);
+  return std::filesystem::file_size(path) == 84 + 50 * std::uint64_t{count} || std::string(head, 5) != "solid";
+}
+
+// an ASCII STL's facets hold three vertices each between "outer loop" and "endloop" (assimp dropped a
+// fourth vertex without a word)
+void CheckAsciiStl(const std::string& path, const std::string& field) {
+  if (IsBinaryStl(path)) return;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  int corners = 0;
+  for (long number = 1; std::getline(in, line); ++number) {
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword == "outer") corners = 0;
+    if (keyword == "vertex" && ++corners > 3)
+      throw InputError(path, field, At(number, line) + ": a facet's fourth vertex; expected three (triangulate it first)");
+    if (keyword == "endloop" && corners != 3)
+      throw InputError(path, field, At(number, line) + ": a facet of " + std::to_string(corners) + " vertices; expected three");
+  }
 }
 
 }  // namespace
@@ -307,6 +364,7 @@ void CheckMeshText(const std::string& path, const std::string& field) {
   if (extension == ".obj") CheckObjLines(path, field);
   if (extension == ".ply") CheckPly(path, field);
   if (extension == ".off") CheckOff(path, field);
+  if (extension == ".stl") CheckAsciiStl(path, field);
 }
 
 }  // namespace dymesh

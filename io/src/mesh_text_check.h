@@ -7,8 +7,9 @@
 namespace dymesh {
 
 /// Refuses (InputError naming the file, the field and the line) an OBJ line that is not a whole
-/// vertex or face, and a PLY or OFF file whose header counts its data cannot hold or whose faces
-/// (ASCII) have fewer than three corners or a corner outside the vertices. Other extensions are left alone.
+/// vertex or face; a PLY or OFF file whose header counts its data cannot hold, whose faces (ASCII)
+/// have fewer than three corners or a corner outside the vertices, or (ASCII) with data past its
+/// counts; and an ASCII STL facet of other than three vertices. Other extensions are left alone.
 void CheckMeshText(const std::string& path, const std::string& field);
 
 }  // namespace dymesh

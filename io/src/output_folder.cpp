@@ -6,12 +6,15 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "dymesh/io/atomic_file.h"
 #include "dymesh/core/scenario.h"
+#include "dymesh/io/scenario_json.h"
 
 namespace dymesh {
 namespace {
@@ -69,15 +72,78 @@ void CheckWritable(const std::string& dir) {
   unlink(probe.c_str());
 }
 
-// every output name and its temporary fit the folder's name limit
+// the names the run writes in the folder: its outputs, the lock and the manifest
+std::vector<std::string> WrittenNames(std::vector<std::string> outputs) {
+  outputs.push_back(kLockFileName);
+  outputs.push_back(kManifestFileName);
+  return outputs;
+}
+
+// every output name and its temporary fit the folder's name limit, and their paths the system's
+// path limit (an over-long path failed only after the whole run, exit 1)
 void CheckNames(const std::string& dir, const std::vector<std::string>& names) {
   const long limit = pathconf(dir.c_str(), _PC_NAME_MAX);
   const std::size_t max = limit > 0 ? static_cast<std::size_t>(limit) : 255;
-  for (const std::string& name : names)
+  for (const std::string& name : names) {
     if (name.size() + kTemporaryNameExtra > max)
       Refuse(dir, "output file name \"" + name + "\" is " + std::to_string(name.size()) +
                       " bytes; this folder allows " + std::to_string(max - kTemporaryNameExtra) +
                       " (with the temporary suffix): shorten the body name");
+    const std::size_t path = (fs::path(dir) / name).string().size() + kTemporaryNameExtra;
+    if (path >= PATH_MAX)
+      Refuse(dir, "the path of output \"" + name + "\" (with the temporary suffix) is " + std::to_string(path) +
+                      " bytes; the system allows " + std::to_string(PATH_MAX - 1) + ": give a shorter --out");
+  }
+}
+
+// the folder holds an entry of that name (a dangling link too)
+bool Holds(const std::string& dir, const std::string& name) {
+  std::error_code ec;
+  return fs::exists(fs::symlink_status(fs::path(dir) / name, ec));
+}
+
+// no name the run writes is a FIFO, a folder, a device or a socket: opening a FIFO blocks the run,
+// and the others cannot be replaced
+void RefuseNonRegularFiles(const std::string& dir, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    if (!Holds(dir, name)) continue;
+    const std::string problem = NotARegularFile((fs::path(dir) / name).string());
+    if (!problem.empty() && problem != "file not found")
+      Refuse(dir, "holds \"" + name + "\", " + problem + ": remove it or choose another folder");
+  }
+}
+
+// the names the folder's manifest lists (none without a manifest)
+std::set<std::string> ManifestNames(const std::string& dir) {
+  std::ifstream in(fs::path(dir) / kManifestFileName);
+  std::set<std::string> names;
+  for (std::string name; std::getline(in, name);) names.insert(name);
+  return names;
+}
+
+// `file` is one of the inputs (the same file, however its path is spelt or linked)
+bool IsInput(const fs::path& file, const std::vector<std::string>& inputs) {
+  std::error_code ec;
+  return std::any_of(inputs.begin(), inputs.end(), [&](const std::string& input) { return fs::equivalent(file, input, ec); });
+}
+
+// no name the run writes replaces a file the run reads (a scenario saved as summary.json, a mesh
+// named like a deformed mesh, an ensemble's base scenario named samples.jsonl)
+void RefuseReplacedInputs(const std::string& dir, const std::vector<std::string>& names, const std::vector<std::string>& inputs) {
+  for (const std::string& name : names)
+    if (Holds(dir, name) && IsInput(fs::path(dir) / name, inputs))
+      Refuse(dir, "the output \"" + name + "\" would replace an input file of this run: move the input out of the "
+                  "folder or choose another folder");
+}
+
+// an output name held by a file no earlier dymesh run listed in the manifest is the user's: replacing
+// (or, for an ensemble's journal, deleting) it would lose it
+void RefuseUnrecordedFiles(const std::string& dir, const std::vector<std::string>& outputs) {
+  const std::set<std::string> recorded = ManifestNames(dir);
+  for (const std::string& name : outputs)
+    if (Holds(dir, name) && !recorded.count(name))
+      Refuse(dir, "holds \"" + name + "\", which no earlier dymesh run wrote (it is not in " + kManifestFileName +
+                      "): move it or choose another folder");
 }
 
 // a manifest entry dymesh may remove: a plain name in this folder, never a path, of a kind dymesh
@@ -96,10 +162,7 @@ void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& out
   auto has = [](const std::vector<std::string>& names, const char* name) {
     return std::find(names.begin(), names.end(), name) != names.end();
   };
-  auto holds = [&](const char* name) {
-    std::error_code ec;
-    return fs::exists(fs::path(dir) / name, ec);
-  };
+  auto holds = [&](const char* name) { return Holds(dir, name); };
   const bool run = has(outputs, "summary.json"), ensemble = has(outputs, "samples.jsonl");
   if (run && (holds("samples.jsonl") || holds("samples.journal.jsonl") || holds("ensemble.json")))
     Refuse(dir, "holds an ensemble's results (samples.jsonl, ensemble.json): give another folder for a single run");
@@ -109,8 +172,8 @@ void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& out
 
 }  // namespace
 
-OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs)
-    : dir_(dir), outputs_(std::move(outputs)) {
+OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs, std::vector<std::string> inputs)
+    : dir_(dir), outputs_(std::move(outputs)), inputs_(std::move(inputs)) {
   if (dir_.empty()) throw InputError("command line", "--out", "expected a folder name, got \"\"");
   created_ = EnsureFolder(dir_);
   try {
@@ -122,9 +185,11 @@ OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outp
 }
 
 void OutputFolder::TakeFolder() {
+  const std::vector<std::string> names = WrittenNames(outputs_);
+  CheckNames(dir_, names);
   CheckWritable(dir_);
-  CheckNames(dir_, outputs_);
   RefuseOtherKind(dir_, outputs_);
+  RefuseNonRegularFiles(dir_, names);
   // exclusive for the whole run; the kernel releases it if the process dies
   const std::string lock = (fs::path(dir_) / kLockFileName).string();
   lock_fd_ = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
@@ -135,6 +200,9 @@ void OutputFolder::TakeFolder() {
     throw OutputFolderBusy(dir_ + ": --out: another dymesh run is writing into this folder (it holds " + lock +
                            "): wait for it to finish or choose another folder");
   }
+  // what is in the folder, once no other run changes it
+  RefuseReplacedInputs(dir_, names, inputs_);
+  RefuseUnrecordedFiles(dir_, outputs_);
 }
 
 OutputFolder::~OutputFolder() {
@@ -143,20 +211,21 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::ReplacePreviousRun() {
-  const fs::path manifest = fs::path(dir_) / kManifestFileName;
-  // the previous run's files, as it recorded them
-  std::ifstream previous(manifest);
-  std::string name;
-  while (std::getline(previous, name)) {
+  // the previous run's files, as it recorded them; one this run reads stays
+  for (const std::string& name : ManifestNames(dir_)) {
     if (!PlainName(name)) continue;
     std::error_code ec;
     const fs::path file = fs::path(dir_) / name;
-    if (fs::is_regular_file(fs::symlink_status(file, ec))) fs::remove(file, ec);
+    if (fs::is_regular_file(fs::symlink_status(file, ec)) && !IsInput(file, inputs_)) fs::remove(file, ec);
   }
-  // this run's, before any of them is written
+  RecordOutputs();
+}
+
+void OutputFolder::RecordOutputs() {
+  // this run's files, before any of them is written
   std::string text;
   for (const std::string& output : outputs_) text += output + "\n";
-  WriteFileAtomically(manifest.string(), text);
+  WriteFileAtomically((fs::path(dir_) / kManifestFileName).string(), text);
 }
 
 }  // namespace dymesh

@@ -2,6 +2,7 @@
 
 #include "dymesh/io/json_document.h"
 #include "dymesh/io/mesh_import.h"
+#include "dymesh/io/printable.h"
 
 #include <nlohmann/json.hpp>
 
@@ -70,8 +71,9 @@ struct Source {
   std::vector<RunWarning>* warnings = nullptr;  // the scenario's: implausible values land here
 };
 
+// field and message as printable text: a key or a value from the file may hold control bytes
 [[noreturn]] void Fail(const Source& src, const std::string& field, const std::string& message) {
-  throw InputError(src.file, field, message);
+  throw InputError(src.file, Printable(field), Printable(message));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -726,10 +728,9 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   body.name = ReadString(src, Require(src, j, path, "name"), Join(path, "name"));
   if (body.name.empty()) Fail(src, Join(path, "name"), "expected a non-empty string, got \"\"");
   // the name becomes output file names (NAME_deformed.obj, ...)
-  const bool control = std::any_of(body.name.begin(), body.name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; });
-  if (control || body.name.find_first_of("/\\") != std::string::npos || body.name == "." || body.name == "..")
+  if (HasControlCharacter(body.name) || body.name.find_first_of("/\\") != std::string::npos || body.name == "." || body.name == "..")
     Fail(src, Join(path, "name"),
-         "expected a name usable in file names (no /, \\ or control characters), got " + Describe(j["name"]));
+         "expected a name usable in file names (no /, \\ or control characters, DEL and U+0080..U+009F included), got " + Describe(j["name"]));
   // vehicle file first, then this body's own fields
   BodyFields fields;
   if (const Json* v = Find(j, "vehicle")) fields = LoadVehicle(src, *v, Join(path, "vehicle"), &body.vehicle_file);
@@ -839,6 +840,14 @@ std::string NotARegularFile(const std::string& path) {
     case fs::file_type::socket: return "a socket, not a file";
     default: return ec ? "cannot be read: " + ec.message() : "not a regular file";
   }
+}
+
+std::vector<std::string> InputFiles(const Scenario& scenario) {
+  std::vector<std::string> files = {scenario.file};
+  for (const BodySpec& body : scenario.bodies)
+    for (const std::string& file : {body.vehicle_file, body.mesh.file})
+      if (!file.empty()) files.push_back(file);
+  return files;
 }
 
 Scenario LoadScenario(const std::string& path) {

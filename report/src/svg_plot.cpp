@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "dymesh/io/printable.h"
 #include "dymesh/report/colour_map.h"
 
 namespace dymesh {
@@ -186,7 +187,9 @@ std::string XmlEscape(const std::string& text) {
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
-      default: out += c;
+      case '\t': case '\n': case '\r': out += c; break;
+      // XML allows no other C0 control character, even as a reference: shown as its escape
+      default: out += static_cast<unsigned char>(c) < 0x20 ? Printable(std::string(1, c)) : std::string(1, c);
     }
   }
   return out;

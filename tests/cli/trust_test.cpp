@@ -6,14 +6,19 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
+#include "../ensemble/box_spec.h"
 #include "cli_fixture.h"
 #include "coarse_boxes.h"
 #include "process.h"
@@ -398,6 +403,132 @@ TEST_F(Trust, MalformedObjLinesAreRefusedWithTheLine) {
   EXPECT_TRUE(Has(nul.err, "bodies[0].mesh.file: expected a file name (no NUL character)")) << nul.err;
 }
 
+// assimp 5.2 drops a vertex with a coordinate written from a bare point (".5") or with 5 or 7 numbers,
+// shifting every later index (the mesh was built wrong, exit 0), and divides x, y, z by a w (found
+// by fuzzing, 2026-11-26): refused with the line and the token; the forms it reads run
+TEST_F(Trust, ObjVerticesAssimpMisreadsAreRefusedWithTheLine) {
+  const std::string box = BoxObj(1);
+  const std::string rest = box.substr(box.find("v 1 0 0"));
+  const struct {
+    const char* first;
+    const char* message;
+  } cases[] = {
+      {"v .5 0 0\n", "line 1 (\"v .5 0 0\"): expected a digit before the point (0.5), got \".5\""},
+      {"v 0 .5 0\n", "line 1 (\"v 0 .5 0\"): expected a digit before the point (0.5), got \".5\""},
+      {"v 0 0 .5\n", "line 1 (\"v 0 0 .5\"): expected a digit before the point (0.5), got \".5\""},
+      {"v 0 0 0 1 0\n", "line 1 (\"v 0 0 0 1 0\"): expected a vertex \"v x y z\", \"v x y z w\" or \"v x y z r g b\", got 5 numbers"},
+      {"v 0 0 0 1 0 0 1\n", "line 1 (\"v 0 0 0 1 0 0 1\"): expected a vertex \"v x y z\", \"v x y z w\" or \"v x y z r g b\", got 7 numbers"},
+      {"v 0 0 0 2\n", "line 1 (\"v 0 0 0 2\"): expected w = 1 (assimp divides x, y and z by w), got \"2\""},
+  };
+  for (const auto& c : cases) {
+    Write("v.obj", c.first + rest);
+    const ProcessResult r = Run(WithCarMesh("v.obj"));
+    EXPECT_EQ(r.exit_code, 2) << c.first;
+    EXPECT_TRUE(Has(r.err, std::string("v.obj: bodies[0].mesh.file: ") + c.message)) << r.err;
+  }
+  // w = 1, a colour, a signed point and a trailing point read as written
+  Write("ok.obj", "v -.0 +.0 0. 1\nv 1 0 0 0.5 0.5 1\n" + box.substr(box.find("v 1 1 0")));
+  const ProcessResult ok = Dymesh({"check", Write("s.json", WithCarMesh("ok.obj").dump())});
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(Has(ok.out, "vertices 8, triangles 12")) << ok.out;
+}
+
+// found by fuzzing (2026-11-26): the JSON library ends the text at a NUL byte, so "{...}\0garbage" was
+// accepted (scenario, vehicle file, ensemble spec); a message was cut at a NUL in a key and printed a
+// CR-only OBJ file's line raw
+TEST_F(Trust, NulBytesAndControlBytesAreRefusedAndShownEscaped) {
+  const std::string scenario = BoxScenario().dump();
+  const ProcessResult trailing = Dymesh({"check", Write("s.json", scenario + std::string(1, '\0') + "garbage")});
+  EXPECT_EQ(trailing.exit_code, 2) << trailing.err;
+  EXPECT_TRUE(Has(trailing.err, "s.json: (json): malformed JSON at byte " + std::to_string(scenario.size()) +
+                                    ": a NUL byte; expected JSON text, and nothing after the document")) << trailing.err;
+  Write("vehicle.json", std::string(R"({"units": "US", "weight": 3000})") + '\0' + "x");
+  Json j = BoxScenario();
+  j["bodies"][0]["vehicle"] = "vehicle.json";
+  const ProcessResult vehicle = Dymesh({"check", Write("v.json", j.dump())});
+  EXPECT_EQ(vehicle.exit_code, 2) << vehicle.err;
+  EXPECT_TRUE(Has(vehicle.err, "vehicle.json: (json): malformed JSON at byte 31: a NUL byte")) << vehicle.err;
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_ / "e", 2);
+  std::ofstream(spec, std::ios::app) << '\0' << "{}";
+  const ProcessResult ensemble = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e" / "out").string()});
+  EXPECT_EQ(ensemble.exit_code, 2) << ensemble.err;
+  EXPECT_TRUE(Has(ensemble.err, "spec.json: (json): malformed JSON at byte ")) << ensemble.err;
+  // control bytes from the file are escaped: the whole message is shown, and no CR rewrites the line
+  Json key = BoxScenario();
+  key[std::string("un") + '\0' + "its"] = "US";
+  const ProcessResult nul_key = Dymesh({"check", Write("k.json", key.dump())});
+  EXPECT_EQ(nul_key.exit_code, 2) << nul_key.err;
+  EXPECT_TRUE(Has(nul_key.err, "k.json: un\\x00its: unknown key \"un\\x00its\"; allowed keys: ")) << nul_key.err;
+  Write("cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+  const ProcessResult cr = Run(WithCarMesh("cr.obj"));
+  EXPECT_EQ(cr.exit_code, 2) << cr.err;
+  EXPECT_TRUE(Has(cr.err, "line 1 (\"v 0 0 0\\rv 1 0 0\\rv 0 1 0\\rf 1 2 3\\r\")")) << cr.err;
+  EXPECT_FALSE(Has(cr.err, "\r")) << cr.err;
+}
+
+// the fields of a CSV line, read as RFC 4180 says (a quoted field may hold commas and doubled quotes)
+std::vector<std::string> CsvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"') fields.back() += line[++i];
+    else if (line[i] == '"') quoted = !quoted;
+    else if (line[i] == ',' && !quoted) fields.emplace_back();
+    else fields.back() += line[i];
+  }
+  return fields;
+}
+
+// found by fuzzing (2026-11-26): a comma in a body name shifted history.csv's header against its data,
+// DEL and C1 controls in a body name were accepted, and a scenario name with a control character
+// made report.html malformed XML
+TEST_F(Trust, BodyNamesQuotedInTheCsvAndControlCharactersRefused) {
+  Json j = BoxScenario();
+  j["bodies"][0]["name"] = "car, \"blue\"";
+  j["name"] = std::string("box\x01 into wall");
+  ASSERT_EQ(Run(j).exit_code, 0);
+  std::istringstream csv(ReadFile(dir_ / "out" / "history.csv"));
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_EQ(CsvFields(header).size(), CsvFields(row).size()) << header;
+  EXPECT_EQ(CsvFields(header)[1], "car, \"blue\".x[in]") << header;
+  const std::string html = ReadFile(dir_ / "out" / "report.html");
+  EXPECT_TRUE(Has(html, "<title>box\\x01 into wall - DyMESH report</title>")) << html.substr(0, 300);
+  for (const std::string name : {std::string("car\x7f"), std::string("car\u0085"), std::string("car\x1b")}) {
+    j["bodies"][0]["name"] = name;
+    const ProcessResult r = Run(j);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_TRUE(Has(r.err, "s.json: bodies[0].name: expected a name usable in file names (no /, \\ or control "
+                           "characters, DEL and U+0080..U+009F included), got ")) << r.err;
+  }
+}
+
+// found by fuzzing (2026-11-26): assimp ignored a PLY's or an OFF's line past its header's counts (an
+// extra face) and dropped the fourth vertex of an ASCII STL facet, without a word
+TEST_F(Trust, MeshDataPastTheCountsOrAFacetsFourthVertexIsRefusedWithTheLine) {
+  const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";
+  const std::string faces = "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n"
+                            "3 3 0 4\n3 3 4 7\n";
+  Write("box.off", "OFF\n8 12 0\n" + vertices + faces + "3 0 1 2\n");
+  const ProcessResult off = Run(WithCarMesh("box.off"));
+  EXPECT_EQ(off.exit_code, 2) << off.err;
+  EXPECT_TRUE(Has(off.err, "box.off: bodies[0].mesh.file: line 23 (\"3 0 1 2\"): data past the header's counts")) << off.err;
+  Write("box.ply", "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+                   "element face 12\nproperty list uchar int vertex_indices\nend_header\n" + vertices + faces + "3 0 1 2\n");
+  const ProcessResult ply = Run(WithCarMesh("box.ply"));
+  EXPECT_EQ(ply.exit_code, 2) << ply.err;
+  EXPECT_TRUE(Has(ply.err, "box.ply: bodies[0].mesh.file: line 30 (\"3 0 1 2\"): data past the header's counts")) << ply.err;
+  Write("quad.stl", "solid q\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 1 1 0\n"
+                    "   vertex 0 1 0\n  endloop\n endfacet\nendsolid q\n");
+  const ProcessResult stl = Run(WithCarMesh("quad.stl"));
+  EXPECT_EQ(stl.exit_code, 2) << stl.err;
+  EXPECT_TRUE(Has(stl.err, "quad.stl: bodies[0].mesh.file: line 7 (\"   vertex 0 1 0\"): a facet's fourth vertex; expected three")) << stl.err;
+  // the same files without the extra line or vertex are read
+  Write("box.off", "OFF\n8 12 0\n" + vertices + faces);
+  EXPECT_EQ(Dymesh({"check", Write("s.json", WithCarMesh("box.off").dump())}).exit_code, 0);
+}
+
 TEST_F(Trust, VehicleFileErrorSaysWhichScenarioBodyUsesIt) {
   Write("bad_vehicle.json", R"({"units": "US", "mass": -1})");
   Json j = BoxScenario();
@@ -506,6 +637,117 @@ TEST_F(Trust, ReusedFolderKeepsOnlyTheNewRunsFilesAndForeignFiles) {
   std::ofstream(dir_ / "out" / ".dymesh-manifest", std::ios::app) << "notes.txt\n";
   ASSERT_EQ(Run(BoxScenario()).exit_code, 0);
   EXPECT_EQ(ReadFile(dir_ / "out" / "notes.txt"), "mine");
+}
+
+// found by fuzzing (2026-11-26): a run replaced its own scenario saved as summary.json in --out and
+// its mesh named car_deformed.obj (a previous run's output, read back), an ensemble its spec named
+// ensemble.json; all refused before running, the input kept
+TEST_F(Trust, OutputThatWouldReplaceAnInputIsRefused) {
+  fs::create_directories(dir_ / "out");
+  const std::string scenario = Write("out/summary.json", BoxScenario().dump());
+  const ProcessResult r = Dymesh({"run", scenario, "--quiet", "--out", (dir_ / "out").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "out: --out: the output \"summary.json\" would replace an input file of this run")) << r.err;
+  EXPECT_EQ(ReadFile(scenario), BoxScenario().dump());
+  fs::remove(scenario);
+  // a previous run's deformed mesh given as this run's mesh: listed in the manifest, still an input
+  ASSERT_EQ(Run(BoxScenario()).exit_code, 0);
+  const std::string mesh = ReadFile(dir_ / "out" / "car_deformed.obj");
+  Json j = BoxScenario();
+  j["bodies"][0]["mesh"] = {{"file", "out/car_deformed.obj"}, {"unit", "in"}};
+  const ProcessResult again = Run(j);
+  EXPECT_EQ(again.exit_code, 2) << again.err;
+  EXPECT_TRUE(Has(again.err, "the output \"car_deformed.obj\" would replace an input file")) << again.err;
+  EXPECT_TRUE(ReadFile(dir_ / "out" / "car_deformed.obj") == mesh);
+  // an ensemble's spec named like its statistics
+  fs::rename(dymesh::testing::WriteBoxSpec(dir_ / "e", 2), dir_ / "e" / "ensemble.json");
+  const ProcessResult ensemble = Dymesh({"ensemble", (dir_ / "e" / "ensemble.json").string(), "--quiet", "--out", (dir_ / "e").string()});
+  EXPECT_EQ(ensemble.exit_code, 2) << ensemble.err;
+  EXPECT_TRUE(Has(ensemble.err, "the output \"ensemble.json\" would replace an input file")) << ensemble.err;
+  EXPECT_FALSE(fs::exists(dir_ / "e" / "samples.jsonl"));
+}
+
+// found by fuzzing (2026-11-26): a user's report.html in a folder no dymesh run had written was
+// replaced, and an ensemble deleted a user's samples.journal.jsonl; a folder a run wrote is reused
+TEST_F(Trust, UsersFileWithAnOutputNameIsRefused) {
+  fs::create_directories(dir_ / "out");
+  fs::create_directories(dir_ / "e");
+  Write("out/report.html", "mine");
+  const ProcessResult r = Run(BoxScenario());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "out: --out: holds \"report.html\", which no earlier dymesh run wrote (it is not in "
+                         ".dymesh-manifest): move it or choose another folder")) << r.err;
+  EXPECT_TRUE(ReadFile(dir_ / "out" / "report.html") == "mine");
+  Write("e/samples.journal.jsonl", "my notes\n");
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_ / "spec", 2);
+  const ProcessResult ensemble = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e").string()});
+  EXPECT_EQ(ensemble.exit_code, 2) << ensemble.err;
+  EXPECT_TRUE(Has(ensemble.err, "holds \"samples.journal.jsonl\", which no earlier dymesh run wrote")) << ensemble.err;
+  EXPECT_EQ(ReadFile(dir_ / "e" / "samples.journal.jsonl"), "my notes\n");
+  // the folders dymesh wrote are reused: a run's and an ensemble's (its manifest written as it starts)
+  fs::remove(dir_ / "out" / "report.html");
+  ASSERT_EQ(Run(BoxScenario()).exit_code, 0);
+  EXPECT_EQ(Run(BoxScenario()).exit_code, 0);
+  for (int pass = 0; pass < 2; ++pass)
+    EXPECT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e2").string()}).exit_code, 0) << pass;
+}
+
+// found by fuzzing (2026-11-26): a FIFO with the manifest's or an output's name made the run hang
+TEST_F(Trust, FifoWithAnOutputNameIsRefusedWithoutBlocking) {
+  fs::create_directories(dir_ / "out");
+  ASSERT_EQ(mkfifo((dir_ / "out" / ".dymesh-manifest").c_str(), 0644), 0);
+  const ProcessResult r = Dymesh({"run", Write("s.json", BoxScenario().dump()), "--quiet", "--out", (dir_ / "out").string()}, 30.0);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "out: --out: holds \".dymesh-manifest\", a FIFO (named pipe), not a file")) << r.err;
+  fs::create_directories(dir_ / "e");
+  ASSERT_EQ(mkfifo((dir_ / "e" / "samples.jsonl").c_str(), 0644), 0);
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_ / "spec", 2);
+  const ProcessResult ensemble = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e").string()}, 30.0);
+  EXPECT_EQ(ensemble.exit_code, 2) << ensemble.err;
+  EXPECT_TRUE(Has(ensemble.err, "holds \"samples.jsonl\", a FIFO (named pipe), not a file")) << ensemble.err;
+}
+
+// found by fuzzing (2026-11-26): an --out whose outputs' paths pass PATH_MAX failed after the whole
+// run (exit 1), leaving its folders, its lock and a manifest of files never written
+TEST_F(Trust, OutPathTooLongForTheSystemIsRefusedBeforeRunning) {
+  fs::path out = dir_;
+  while (out.string().size() < PATH_MAX - 25) out /= std::string(std::min<std::size_t>(200, PATH_MAX - 25 - out.string().size()), 'd');
+  const ProcessResult r = Dymesh({"run", Write("s.json", BoxScenario().dump()), "--quiet", "--out", out.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Has(r.err, "--out: the path of output \"car_undeformed.obj\" (with the temporary suffix) is ")) << r.err;
+  EXPECT_TRUE(Has(r.err, ": give a shorter --out")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / std::string(200, 'd')));
+}
+
+// found by fuzzing (2026-11-26): journal and shard records of the wrong types gave the JSON library's
+// raw message or were accepted ("warnings": 5), and a junk last line of a shard was merged unsaid
+TEST_F(Trust, EnsembleRecordsOfTheWrongTypesAreRefusedOrRunAgain) {
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_ / "spec", 2);
+  ASSERT_EQ(Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e").string()}).exit_code, 0);
+  const std::string samples = ReadFile(dir_ / "e" / "samples.jsonl");
+  const std::string first = samples.substr(0, samples.find('\n'));
+  // a journal record of the wrong type is left out: its sample runs again, to the same bytes
+  Json bad = Json::parse(first);
+  bad["warnings"] = 5;
+  fs::create_directories(dir_ / "j");
+  fs::create_directories(dir_ / "s");
+  Write("j/samples.journal.jsonl", bad.dump() + "\n");
+  Write("j/.dymesh-manifest", "samples.journal.jsonl\n");
+  const ProcessResult journal = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "j").string()});
+  EXPECT_EQ(journal.exit_code, 0) << journal.err;
+  EXPECT_EQ(ReadFile(dir_ / "j" / "samples.jsonl"), samples);
+  // a shard's record of the wrong type is refused naming the file, the line and the field
+  bad = Json::parse(first);
+  bad["bodies"][0]["delta_v"] = "fast";
+  Write("s/samples.jsonl", samples.substr(samples.find('\n') + 1) + bad.dump() + "\n");
+  const ProcessResult merge = Dymesh({"ensemble", "merge", spec, "--out", (dir_ / "m").string(), (dir_ / "s").string()});
+  EXPECT_EQ(merge.exit_code, 2) << merge.err;
+  EXPECT_TRUE(Has(merge.err, "s/samples.jsonl: line 2: bodies[0].delta_v: expected a number (not a sample record of this spec")) << merge.err;
+  // a junk last line of a finished folder's samples.jsonl
+  std::ofstream(dir_ / "e" / "samples.jsonl", std::ios::app) << "{\"index\": 1\n";
+  const ProcessResult junk = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "e").string()});
+  EXPECT_EQ(junk.exit_code, 2) << junk.err;
+  EXPECT_TRUE(Has(junk.err, "e/samples.jsonl: line 3: expected a JSON object with \"index\" and \"status\"")) << junk.err;
 }
 
 TEST_F(Trust, SecondRunIntoABusyFolderIsRefused) {

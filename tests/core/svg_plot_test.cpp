@@ -57,6 +57,13 @@ TEST(SvgText, EscapesAndFormats) {
   EXPECT_EQ(FormatFixed(3.14159, 3), "3.142");
 }
 
+// a scenario name, an ensemble input or a CRASH3 name with a control character made report.html
+// malformed XML (found by fuzzing, 2026-11-26): XML allows none but tab, newline and CR
+TEST(SvgText, ControlCharactersXmlDoesNotAllowAreShownEscaped) {
+  EXPECT_EQ(XmlEscape(std::string("sp\x01" "eed\x1b[31m c\x07 ") + '\0'), "sp\\x01eed\\x1B[31m c\\x07 \\x00");
+  EXPECT_EQ(XmlEscape("tab\there\nline\r"), "tab\there\nline\r");
+}
+
 TEST(RenderLinePlot, WellFormedWithEverySeriesAndMarker) {
   LinePlot p;
   p.id = "plot-test";

@@ -77,8 +77,9 @@ inline constexpr std::array<const char*, 9> kMeasuredQuantities = {"c1", "c2", "
 SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes,
                        double time_limit = 0.0);
 
-/// Reads a record line back (status, outputs); false when it is not a valid record of `spec`.
-bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out);
+/// Reads a record line back (status, outputs); false when it is not a valid record of `spec`, with
+/// `problem` (when given) naming the field and what was expected.
+bool ParseRecord(const Spec& spec, const std::string& line, SampleRecord* out, std::string* problem = nullptr);
 
 /// Reads back a record line this engine just wrote for `spec` (here or on a worker rank); one that
 /// does not parse is a bug, not bad input: std::logic_error naming the line's start.

@@ -73,6 +73,7 @@ struct Spec {
   std::string file;            ///< the spec's path (messages)
   std::string scenario_file;   ///< the base scenario, absolute
   std::string scenario_text;   ///< its JSON text as read
+  std::vector<std::string> input_files;  ///< the spec, the base scenario and the vehicle and mesh files it reads
   std::vector<Input> inputs;
   Design design = Design::kLatinHypercube;
   int samples = 100;            ///< runs (Saltelli: base_samples * (inputs + 2))

@@ -19,11 +19,13 @@ inline constexpr const char* kManifestFileName = ".dymesh-manifest";
 
 class OutputFolder {
  public:
-  /// Creates `dir` when missing, checks that it is a writable folder and that every name of
-  /// `outputs` (plain file names) fits its name limit with the temporary suffix, and takes an
-  /// exclusive lock on it. Throws InputError (field "--out") naming the folder and the reason, or
-  /// OutputFolderBusy when another run holds it.
-  OutputFolder(const std::string& dir, std::vector<std::string> outputs);
+  /// Creates `dir` when missing, checks that it is a writable folder, that every name of `outputs`
+  /// (plain file names) fits its name and path limits with the temporary suffix, and that no output
+  /// would replace one of `inputs` (the files the run reads), a file that is not a regular file (a
+  /// FIFO would block the run), or a file no earlier dymesh run wrote (not in its manifest), and
+  /// takes an exclusive lock on it. Throws InputError (field "--out") naming the folder, the file and
+  /// the reason, or OutputFolderBusy when another run holds it.
+  OutputFolder(const std::string& dir, std::vector<std::string> outputs, std::vector<std::string> inputs = {});
   ~OutputFolder();  ///< releases the lock; removes the folder if it created it and nothing but the lock is in it
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
@@ -32,13 +34,17 @@ class OutputFolder {
   /// records this run's outputs as the manifest. Call just before writing the outputs.
   void ReplacePreviousRun();
 
+  /// Records this run's outputs as the manifest and removes nothing: for an ensemble, whose earlier
+  /// records in the folder are read back to resume. Call before writing any output.
+  void RecordOutputs();
+
   const std::string& dir() const { return dir_; }
 
  private:
   void TakeFolder();  // checks the folder and takes its lock
 
   std::string dir_;
-  std::vector<std::string> outputs_;
+  std::vector<std::string> outputs_, inputs_;
   std::string created_;  // the outermost folder this run created (empty: the folder existed)
   int lock_fd_ = -1;
 };

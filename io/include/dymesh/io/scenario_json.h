@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "dymesh/core/scenario.h"
 
@@ -10,6 +11,9 @@ namespace dymesh {
 /// (named pipe), not a file", a device, a socket), or "" for a regular file. Never opens it (a FIFO
 /// would block).
 std::string NotARegularFile(const std::string& path);
+
+/// The files `scenario` reads: the scenario file itself, and each body's vehicle file and mesh file.
+std::vector<std::string> InputFiles(const Scenario& scenario);
 
 /// Reads and validates a scenario file; mesh paths are resolved against the file's folder.
 /// Throws InputError naming the file, the field and what was expected.

@@ -8,7 +8,8 @@
 /// with no scripts, fonts or external references.
 namespace dymesh {
 
-/// Text made safe for XML content and attribute values (&, <, >, ").
+/// Text made safe for XML content and attribute values (&, <, >, "; a control character XML does not
+/// allow is written as its escape, \x01).
 std::string XmlEscape(const std::string& text);
 
 /// A number with `decimals` digits after the point ("-0" printed as "0").

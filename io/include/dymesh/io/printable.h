@@ -1,0 +1,45 @@
+#pragma once
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+/// Text from a user's file shown in a message: control bytes written as escapes, so that a NUL does
+/// not end the message and a CR or an escape sequence does not rewrite the terminal.
+namespace dymesh {
+
+/// Whether `text` holds a control character: C0 (below 0x20), DEL, or C1 (U+0080..U+009F in UTF-8).
+inline bool HasControlCharacter(std::string_view text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0;
+    if (c < 0x20 || c == 0x7F || (c == 0xC2 && next >= 0x80 && next <= 0x9F)) return true;
+  }
+  return false;
+}
+
+/// `text` with tab, newline and CR as \t, \n, \r, other C0 controls and DEL as \xHH, and the C1
+/// controls (U+0080..U+009F, in UTF-8) as \u00HH; everything else as it is.
+inline std::string Printable(std::string_view text) {
+  std::string out;
+  char escape[8];
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0;
+    // C1: the two UTF-8 bytes C2 80..C2 9F
+    if (c == 0xC2 && next >= 0x80 && next <= 0x9F) {
+      std::snprintf(escape, sizeof escape, "\\u00%02X", next);
+      out += escape;
+      ++i;
+    } else if (c == '\t' || c == '\n' || c == '\r') {
+      out += c == '\t' ? "\\t" : c == '\n' ? "\\n" : "\\r";
+    } else if (c < 0x20 || c == 0x7F) {
+      std::snprintf(escape, sizeof escape, "\\x%02X", c);
+      out += escape;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
+}  // namespace dymesh
