@@ -495,7 +495,7 @@ TEST_F(Trust, BodyNamesQuotedInTheCsvAndControlCharactersRefused) {
   EXPECT_EQ(CsvFields(header)[1], "car, \"blue\".x[in]") << header;
   const std::string html = ReadFile(dir_ / "out" / "report.html");
   EXPECT_TRUE(Has(html, "<title>box\\x01 into wall - DyMESH report</title>")) << html.substr(0, 300);
-  for (const std::string name : {std::string("car\x7f"), std::string("car\u0085"), std::string("car\x1b")}) {
+  for (const std::string& name : {std::string("car\x7f"), std::string("car\u0085"), std::string("car\x1b")}) {
     j["bodies"][0]["name"] = name;
     const ProcessResult r = Run(j);
     EXPECT_EQ(r.exit_code, 2) << r.err;

@@ -39,7 +39,7 @@ struct Variant {
 // x = 0), placed 0.5 in from it; the run 1.5 s long
 std::string BoxIntoWall(double heading_deg, double restitution, double mu, bool stop, const Variant& setup) {
   const double f = setup.frame_deg * u::kDegree;
-  char box[700], wall[500], json[1500];
+  char box[700], wall[500], json[2000];
   std::snprintf(box, sizeof box, R"({"name": "box", "mesh": {"box": {"length": 180, "width": 66, "height": 30,
       "segments": [18, 7, 3]}}, "weight": 3000, "restitution": %g, "friction": %g, "motion": "planar",
       "stiffness": {"default": {"A": 300, "B": 100, "conversion_height": 30}},
