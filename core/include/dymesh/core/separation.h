@@ -15,7 +15,8 @@ namespace dymesh {
 /// the other's about a point at most the CGs' distance away), so the motion is safe for its margin over
 /// that speed; the outlines are posed again there, until the horizon or a margin is used up (after
 /// kMaxPoses poses: the time reached). The outlines are convex: a corner that enters a concave bay of
-/// the other's plan shape counts as meeting it.
+/// the other's plan shape counts as meeting it; and where the outlines overlap, a node coming back
+/// against a face inside the overlap is not foreseen (README, Known limits).
 /// Determinism: serial, in vertex order.
 double SoonestMeeting(const BodyState& a, const BodyState& b, double horizon, double deepening);
 

@@ -96,7 +96,8 @@ class Simulation {
   /// are those of the last finite step.
   bool failed_numerics() const { return failed_numerics_; }
   /// True when the run ended on the separation rule: contact over for the separation window, and no
-  /// two bodies able to meet again within kSlapHorizon (or the duration) in free motion (SoonestMeeting).
+  /// two bodies able to meet again within kSlapHorizon in free motion (SoonestMeeting; a pair yet to
+  /// touch, within the duration).
   bool separated() const { return separated_; }
   /// True when the last step carried a collision load.
   bool in_contact_at_end() const { return steps_ > 0 && last_contact_time_ == time_; }
