@@ -20,9 +20,14 @@ namespace {
 // median edge above which two deformable bodies, both this coarse, can pass partly through each other
 // where each one's nodes miss the other's faces (README, Known limits: head-on, 30 mph each, 30 in
 // offset, the NSX at 12.8 in lost 0.64 mph of its 30, refined to 1.6 in 24.4; the p406 at 1.7 in
-// gives 21.0 mph, its lod6 at 5.0 in 15.0). A fine mesh against a coarse one meets it everywhere (the
-// p406 against the stock car's 4.5 in: the convergence rows)
+// gives 21.0 mph, its lod6 at 5.0 in 15.0). A fine mesh against a coarse one meets it at moderate
+// speeds (the p406 against the stock car's 4.5 in: the convergence rows), but the coarse side takes
+// little crush where its nodes miss and the fine one can sink into it (the same pair in line from 35 mph,
+// a bus of metre-wide faces: README, Known limits)
 constexpr double kCoarseEdge = 3.0 * units::kInch;
+
+// what a coarse deformable body is noted for: nothing, against another as coarse, or against a finer one
+enum class CoarseNote { kNone, kCoarsePair, kAgainstFiner };
 
 // where a body's mesh comes from
 std::string SourceText(const BodySpec& body) {
@@ -34,9 +39,10 @@ std::string SourceText(const BodySpec& body) {
 }
 
 // counts, bounds and surfaces of one body's mesh (as the engine will use it: welded, about the CG)
-// `coarse_edge`: this body's median edge [m] when it and another deformable body are both coarser than
-// kCoarseEdge, else 0
-void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double coarse_edge, std::ostream& out) {
+// `coarse_edge`: this body's median edge [m] when it is coarser than kCoarseEdge and deformable, noted
+// as `note` says
+void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double coarse_edge, CoarseNote note,
+               std::ostream& out) {
   const OutputUnits u = UnitsOf(scenario.units);
   const MeshStats s = ComputeStats(model.mesh);
   out << Format("  body %d \"%s\": %s\n", i, model.name.c_str(), SourceText(scenario.bodies[i]).c_str());
@@ -65,10 +71,15 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double c
     out << "    note: " << duplicates << " duplicated faces (on the same three vertices as another; tolerated up to 10 % of the faces)\n";
   if (s.open_edges > 0)
     out << "    note: open mesh (edges used by only one triangle): usual for display meshes\n";
-  if (coarse_edge > 0.0)
+  if (note == CoarseNote::kCoarsePair)
     out << Format("    note: median edge %.2f %s: against another deformable body as coarse, nodes this far apart "
                   "miss each other's faces and the bodies can pass partly through each other (README, Known "
                   "limits); mesh.subdivisions refines it\n", coarse_edge * u.length, u.length_name);
+  if (note == CoarseNote::kAgainstFiner)
+    out << Format("    note: median edge %.2f %s: against a finer deformable body, nodes this far apart often miss "
+                  "its faces, so this body takes little of the crush there and the other can sink into it at "
+                  "higher speeds (README, Known limits); mesh.subdivisions refines it\n",
+                  coarse_edge * u.length, u.length_name);
 }
 
 }  // namespace
@@ -100,13 +111,20 @@ int CheckCommand(const std::string& scenario_path, std::ostream& out) {
                   guide.relative_speed * scenario.time_step * u.length, u.length_name,
                   scenario.contact.toofar_maximum * u.length, u.length_name, guide.reach_step);
   }
-  // deformable bodies coarser than kCoarseEdge: noted when there are two or more
+  // deformable bodies coarser than kCoarseEdge, noted when there is another deformable body: as a
+  // coarse pair when two or more are coarse, else against the finer ones
   std::vector<double> coarse(models.size(), 0.0);
   for (std::size_t i = 0; i < models.size(); ++i)
     if (const double edge = MedianEdgeLength(models[i]->mesh); !models[i]->rigid && edge > kCoarseEdge) coarse[i] = edge;
+  const auto count = [&](auto test) { return std::count_if(models.begin(), models.end(), test); };
   const bool coarse_pair = std::count_if(coarse.begin(), coarse.end(), [](double e) { return e > 0.0; }) >= 2;
-  for (int i = 0; i < static_cast<int>(models.size()); ++i)
-    PrintBody(scenario, i, *models[i], coarse_pair ? coarse[i] : 0.0, out);
+  const bool other_deformable = count([](const auto& m) { return !m->rigid; }) >= 2;
+  for (int i = 0; i < static_cast<int>(models.size()); ++i) {
+    const CoarseNote note = coarse[i] <= 0.0 || !other_deformable ? CoarseNote::kNone
+                            : coarse_pair                        ? CoarseNote::kCoarsePair
+                                                                 : CoarseNote::kAgainstFiner;
+    PrintBody(scenario, i, *models[i], coarse[i], note, out);
+  }
   for (const PairPlacement& p : placements) out << PlacementText(scenario, p);
   // what the scenario asks that is possible but implausible
   for (const RunWarning& w : scenario.warnings)

@@ -88,7 +88,7 @@ TEST_F(Cli, CheckPrintsMeshStatisticsInScenarioUnits) {
   EXPECT_EQ(r.err, "");
 }
 
-TEST_F(Cli, CheckNotesTwoDeformableBodiesBothCoarse) {
+TEST_F(Cli, CheckNotesCoarseDeformableBodies) {
   // two deformable boxes whose fronts are 6 in squares and sides 180 in strips (median edge 6.00 in)
   Json j = BoxScenario();
   j["bodies"][1] = j["bodies"][0];
@@ -106,9 +106,15 @@ TEST_F(Cli, CheckNotesTwoDeformableBodiesBothCoarse) {
   const auto [both, text] = notes(j);
   EXPECT_EQ(both, 2u) << text;
   EXPECT_NE(text.find("note: median edge 6.00 in"), std::string::npos) << text;
-  // one side meshed finely (2 in grid): its nodes meet the other's faces everywhere, no note
+  // one side meshed finely (2 in grid): no coarse-pair note; the coarse side is noted against the
+  // finer one (it takes little crush where its nodes miss the fine side's faces)
   j["bodies"][1]["mesh"]["box"]["segments"] = {90, 33, 15};
   EXPECT_EQ(notes(j).first, 0u);
+  const ProcessResult finer = Dymesh({"check", Write("finer.json", j.dump())});
+  EXPECT_EQ(finer.exit_code, 0) << finer.err;
+  EXPECT_NE(finer.out.find("note: median edge 6.00 in: against a finer deformable body"), std::string::npos)
+      << finer.out;
+  EXPECT_EQ(finer.out.find("median edge 2."), std::string::npos) << finer.out;  // the fine side: none
   // coarse but rigid: no note
   j["bodies"][1]["mesh"]["box"]["segments"] = {1, 11, 5};
   j["bodies"][1]["rigid"] = true;
