@@ -10,6 +10,7 @@
 #include <limits>
 #include <sstream>
 
+#include "dymesh/core/run_start.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/ensemble/random_stream.h"
 #include "dymesh/ensemble/sample_run.h"
@@ -358,8 +359,21 @@ bool IsQuantityOf(const Scenario& scenario, const Json& name, bool observable) {
   return body && (among(kOutputQuantities) || (observable && among(kMeasuredQuantities)));
 }
 
-// every input at its median, then each alone at its extremes (within its bounds): the scenario
-// must take them, so that a path or a distribution it cannot take is refused before any sample runs
+// the sample's scenario as a run starts it: parsed, its bodies built (meshes from `meshes`), and
+// what a run refuses before its first step (placement, a fixed body given motion, the stable step)
+void StartSample(const Spec& spec, const std::vector<double>& values, MeshCache* meshes) {
+  Scenario scenario = SampleScenario(spec, values);
+  CheckRunStart(&scenario, SampleModels(scenario, meshes));
+}
+
+// input i at `value`, for messages: inputs[1] ("speed" = 45), or a CRASH3 preset's input
+std::string InputAt(const Spec& spec, std::size_t i, double value) {
+  const std::string named = "\"" + spec.inputs[i].name + "\" = " + Json(value).dump();
+  return spec.inputs[i].pointer.empty() ? "crash3 input " + named : "inputs[" + std::to_string(i) + "] (" + named + ")";
+}
+
+// every input at its median, then each alone at its extremes (within its bounds): a run must start
+// from them, so that a path or a distribution it cannot take is refused before any sample runs
 void TrySampleScenarios(const Reader& r, const Spec& spec) {
   const std::size_t k = spec.inputs.size();
   auto clamp = [&](std::size_t i, double u) {
@@ -367,15 +381,15 @@ void TrySampleScenarios(const Reader& r, const Spec& spec) {
   };
   std::vector<double> median(k);
   for (std::size_t i = 0; i < k; ++i) median[i] = clamp(i, 0.5);
+  MeshCache meshes;  // each mesh source built once for all the trials
+  // the trial's inputs named (input i alone, or all of them at their medians when i == k)
   auto attempt = [&](const std::vector<double>& values, std::size_t i) {
     try {
-      SampleScenario(spec, values);
+      StartSample(spec, values, &meshes);
     } catch (const InputError& e) {
-      const std::string value = i < k ? " = " + Json(values[i]).dump() : "";
-      const std::string which = i == k                       ? "inputs (each at its median)"
-                                : spec.inputs[i].pointer.empty() ? "crash3 input \"" + spec.inputs[i].name + "\"" + value
-                                                                 : "inputs[" + std::to_string(i) + "] (\"" + spec.inputs[i].name + "\"" + value + ")";
-      r.Fail(which, "the scenario refuses this sample: " + std::string(e.what()));
+      std::string which = i < k ? InputAt(spec, i, values[i]) : "";
+      for (std::size_t m = 0; i == k && m < k; ++m) which += (m ? ", " : "inputs at their medians: ") + InputAt(spec, m, values[m]);
+      r.Fail(which.empty() ? "inputs" : which, "the scenario refuses this sample: " + std::string(e.what()));
     }
   };
   attempt(median, k);

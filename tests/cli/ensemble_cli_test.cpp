@@ -433,6 +433,7 @@ TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
   struct Case {
     std::string extra, message;
   };
+  const std::string kBoxScenario = DYMESH_DATA_DIR "/scenarios/validation/box_barrier_30mph.json";
   const Case cases[] = {
       {R"(, {"name": "x", "path": "vehicles[3].mass", "distribution": {"fixed": 1}})",
        "inputs[2].path: \"vehicles[3].mass\" does not lead into the scenario"},
@@ -462,7 +463,21 @@ TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
       {R"(, {"name": "x", "path": "bodies[0].restitution", "distribution": {"fixed": 0.1}})",
        "inputs[2].path: \"bodies[0].restitution\" is already set by inputs[1]"},
       {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"uniform": {"low": 20, "high": 30}}})",
-       "inputs (each at its median): the scenario refuses this sample: "},
+       "inputs at their medians: inputs[0] (\"speed\" = 30.0), inputs[1] (\"restitution\" = 0.1), inputs[2] (\"x\" = 25.0): "
+       "the scenario refuses this sample: "},
+      // what a run refuses before its first step (2026-11-25: every sample ran as failed_input, exit 3): a
+      // position that overlaps the wall at every value, or at one extreme; a speed or a yaw rate on the fixed wall
+      {R"(, {"name": "x", "path": "bodies[0].initial.position[0]", "distribution": {"uniform": {"low": 40, "high": 50}}})",
+       "inputs at their medians: inputs[0] (\"speed\" = 30.0), inputs[1] (\"restitution\" = 0.1), inputs[2] (\"x\" = 45.0): "
+       "the scenario refuses this sample: " + kBoxScenario + ": bodies[1].initial.position: \"box\" and \"wall\" overlap by 44.5 in"},
+      {R"(, {"name": "x", "path": "bodies[0].initial.position[0]", "distribution": {"uniform": {"low": -40, "high": 20}}})",
+       "inputs[2] (\"x\" = 19.9999"},
+      {R"(, {"name": "x", "path": "bodies[1].initial.speed", "distribution": {"uniform": {"low": 0.5, "high": 1}}})",
+       "inputs at their medians: inputs[0] (\"speed\" = 30.0), inputs[1] (\"restitution\" = 0.1), inputs[2] (\"x\" = 0.75): "
+       "the scenario refuses this sample: " + kBoxScenario + ": bodies[1].initial: a body with motion \"fixed\" does not move"},
+      {R"(, {"name": "x", "path": "bodies[1].initial.yaw_rate", "distribution": {"uniform": {"low": 3, "high": 5}}})",
+       "inputs at their medians: inputs[0] (\"speed\" = 30.0), inputs[1] (\"restitution\" = 0.1), inputs[2] (\"x\" = 4.0): "
+       "the scenario refuses this sample: " + kBoxScenario + ": bodies[1].initial: a body with motion \"fixed\" does not move"},
       // read as strictly as a scenario (2026-11-25): a duplicate key kept only its last value, a number out
       // of range and malformed JSON gave the JSON library's own message
       {R"(, {"name": "x", "name": "y", "path": "bodies[0].friction", "distribution": {"fixed": 0.1}})",
