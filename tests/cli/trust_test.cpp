@@ -348,6 +348,7 @@ TEST_F(Trust, ImplausibleValuesRunWithAWarningNamingTheField) {
 TEST_F(Trust, AllRigidScenarioIsRefused) {
   Json j = BoxScenario();
   j["bodies"][0]["rigid"] = true;
+  j["bodies"][0].erase("stiffness");  // a rigid body's stiffness is refused first
   const ProcessResult r = Run(j);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Has(r.err, "s.json: bodies: every body is rigid: at least one must be deformable")) << r.err;
@@ -366,7 +367,7 @@ std::string BoxObj(int copies) {
 // the box scenario with the car's mesh from `file` (metres, scaled to the car's length)
 Json WithCarMesh(const std::string& file) {
   Json j = BoxScenario();
-  j["bodies"][0]["mesh"] = {{"file", file}, {"unit", "m"}, {"fit_length", 180}};
+  j["bodies"][0]["mesh"] = {{"file", file}, {"fit_length", 180}};
   return j;
 }
 
