@@ -134,7 +134,9 @@ Distribution ParseDistribution(const Reader& r, const Json& j, const std::string
     if (!(d.b > d.a)) r.Fail(at + ".high", "expected high > low");
   } else if (kind == "normal" || kind == "truncated_normal") {
     d.kind = kind == "normal" ? DistributionKind::kNormal : DistributionKind::kTruncatedNormal;
-    // mean and sd, or a value with its 95 % band (sd = band / 1.96)
+    // mean and sd, or a value with its 95 % band (sd = band / 1.96): one form, never both
+    if ((p.contains("value") || p.contains("band95")) && (p.contains("mean") || p.contains("sd")))
+      r.Fail(at, "give mean and sd, or value and band95, not both (one would be ignored)");
     if (p.contains("band95")) {
       d.a = num("value"), d.b = num("band95") / 1.959963984540054;
     } else {
@@ -317,6 +319,25 @@ void ParseCorrelation(const Reader& r, const Json& j, Spec* spec) {
   spec->correlation.cholesky = llt.matrixL();
 }
 
+// keys a design does not read: `samples` where the design counts its own runs (grid: the levels,
+// one-at-a-time: the inputs, table: the rows), `table` beside another design, `levels` beside
+// another design than grid
+void RefuseKeysTheDesignIgnores(const Reader& r, const Json& j, Design design) {
+  const char* name = kDesignKeys[static_cast<int>(design)];
+  const char* count = design == Design::kGrid         ? "the product of the inputs' levels"
+                      : design == Design::kOneAtATime ? "1 + 2 x the inputs"
+                      : design == Design::kTable      ? "the rows of table"
+                                                      : nullptr;
+  if (count != nullptr && j.contains("samples"))
+    r.Fail("samples", std::string("the design \"") + name + "\" sets its own run count (" + count + "): remove samples");
+  if (design != Design::kTable && j.contains("table"))
+    r.Fail("table", std::string("is read only by the design \"table\"; this spec's design is \"") + name + "\"");
+  for (std::size_t i = 0; design != Design::kGrid && i < j["inputs"].size(); ++i)
+    if (j["inputs"][i].contains("levels"))
+      r.Fail("inputs[" + std::to_string(i) + "].levels",
+             std::string("is read only by the design \"grid\"; this spec's design is \"") + name + "\"");
+}
+
 // grid, one-at-a-time and table designs: their sample count, and the table's rows
 void SizeDeterministicDesign(const Reader& r, const Json& j, Spec* spec) {
   const std::size_t k = spec->inputs.size();
@@ -457,6 +478,7 @@ Spec LoadSpec(const std::string& path) {
     }
     spec.design = static_cast<Design>(key - kDesignKeys.begin());
   }
+  RefuseKeysTheDesignIgnores(r, j, spec.design);
   if (j.contains("samples")) {
     const double n = r.Number(j["samples"], "samples");
     if (n < 1 || n > 1e7 || std::floor(n) != n) r.Fail("samples", "expected an integer in 1..1e7");

@@ -557,6 +557,38 @@ TEST_F(Ensemble, BadSpecKeysAndSampleCountsAreRefusedBeforeAnySample) {
   EXPECT_NE(r.err.find("spec.json: --samples: this design has 2 samples; expected at most that, got 3"), std::string::npos) << r.err;
 }
 
+// keys the spec's design does not read, and a normal given in both forms (fuzzing, 2026-11-25: each was
+// accepted and ignored)
+TEST_F(Ensemble, SpecKeysThatWouldBeIgnoredAreRefused) {
+  struct Case {
+    const char* design;
+    const char* pointer;
+    const char* value;
+    std::string message;
+  };
+  const Case cases[] = {
+      {"grid", "/samples", "5", "samples: the design \"grid\" sets its own run count"},
+      {"one_at_a_time", "/samples", "5", "samples: the design \"one_at_a_time\" sets its own run count"},
+      {"table", "/samples", "2", "samples: the design \"table\" sets its own run count"},
+      {"latin_hypercube", "/table", "[[30, 0.1]]", "table: is read only by the design \"table\"; this spec's design is \"latin_hypercube\""},
+      {"monte_carlo", "/inputs/0/levels", "4", "inputs[0].levels: is read only by the design \"grid\""},
+      {"latin_hypercube", "/inputs/0/distribution", R"({"normal": {"mean": 30, "sd": 1, "value": 31, "band95": 4}})",
+       "inputs[0].distribution.normal: give mean and sd, or value and band95, not both"},
+      {"latin_hypercube", "/inputs/0/distribution", R"({"truncated_normal": {"value": 30, "band95": 4, "sd": 1, "low": 20, "high": 40}})",
+       "inputs[0].distribution.truncated_normal: give mean and sd, or value and band95, not both"},
+  };
+  for (const Case& c : cases) {
+    const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 5, c.design);
+    nlohmann::json j = nlohmann::json::parse(ReadFile(spec));
+    if (std::string(c.design) == "table") j["table"] = {{30, 0.1}, {32, 0.1}};
+    j[nlohmann::json::json_pointer(c.pointer)] = nlohmann::json::parse(c.value);
+    std::ofstream(spec) << j.dump();
+    const ProcessResult r = Dymesh({"ensemble", spec, "--out", (dir_ / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << c.pointer << " " << c.value;
+    EXPECT_NE(r.err.find("spec.json: " + c.message), std::string::npos) << r.err;
+  }
+}
+
 // CRASH3 presets that fuzzing found accepted (2026-11-24): on the rigid wall (stiffness never used), the
 // same surface twice, and a surface an input also sets (one overwrote the other in every sample)
 TEST_F(Ensemble, Crash3PresetsWithNoOrTwoSourcesAreRefused) {
