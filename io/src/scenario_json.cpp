@@ -19,6 +19,7 @@
 #include <string_view>
 #include <utility>
 
+#include "dymesh/core/run_start.h"
 #include "dymesh/core/units.h"
 #include "json_path.h"
 
@@ -275,7 +276,8 @@ constexpr PhysicalRange kTiltRange{-180.0, 180.0, -45.0, 45.0, "roll or pitch [d
 constexpr PhysicalRange kMassRange{1.0, 1e7, 50.0, 60000.0, "mass"};
 constexpr PhysicalRange kPositionRange{-1e5, 1e5, -1e4, 1e4, "position coordinate"};  // [m]
 constexpr PhysicalRange kCgRange{-100.0, 100.0, -20.0, 20.0, "CG coordinate"};        // [m] from the mesh origin
-constexpr PhysicalRange kBoxRange{1e-3, 1000.0, 0.01, 30.0, "box size"};              // [m]
+constexpr PhysicalRange kBoxRange{kBodySizeRange.hard_lo, kBodySizeRange.hard_hi, kBodySizeRange.lo, kBodySizeRange.hi,
+                                  "box size"};  // [m], as a mesh file's built extent (CheckRunStart)
 constexpr PhysicalRange kGyrationRange{0.01, 100.0, 0.1, 15.0, "radius of gyration sqrt(inertia / mass)"};  // [m]
 constexpr PhysicalRange kFrictionRange{0.0, 10.0, 0.0, 1.5, "friction coefficient"};
 constexpr PhysicalRange kDurationRange{0.0, 1e4, 0.0, 10.0, "duration [s]"};
