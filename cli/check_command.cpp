@@ -89,14 +89,15 @@ int CheckCommand(const std::string& scenario_path, std::ostream& out) {
   Scenario scenario = LoadScenario(scenario_path);
   RefuseMovingFixedBodies(scenario);
   const auto models = BuildBodyModels(scenario);
-  const std::vector<PairPlacement> placements = PlaceBodies(&scenario, models);
+  // what a run refuses before its first step: placement, the stable step
+  const RunStart start = CheckRunStart(&scenario, models);
+  const std::vector<PairPlacement>& placements = start.placements;
   out << scenario.file << ": " << scenario.name << "\n";
   out << Format("  units %s; time step %g s, duration %g s (%d steps)%s\n", scenario.units == UnitSystem::kUS ? "US" : "SI",
                 scenario.time_step, scenario.duration, static_cast<int>(scenario.duration / scenario.time_step + 0.5),
                 scenario.stop_at_separation ? ", stops at separation" : "");
   // the contact period of the stiffest pair and the step it asks for
-  const TimeStepGuide guide = GuideTimeStep(scenario, models);
-  RefuseUnstableStep(scenario, guide);
+  const TimeStepGuide& guide = start.guide;
   if (guide.bounded)
     out << Format("  contact period %.3g s (\"%s\" against \"%s\"): recommended step <= %.3g s, stable limit %.3g s%s\n",
                   guide.contact_period, models[guide.body_a]->name.c_str(), models[guide.body_b]->name.c_str(),

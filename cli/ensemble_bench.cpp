@@ -39,10 +39,7 @@ int RunEnsembleBench(const BenchRequest& request) {
   // memory a sample holds while it runs: its body models, states and Embree scenes
   const Scenario scenario = ensemble::SampleScenario(spec, design.Values(0));
   std::size_t bytes = 0;
-  for (const auto& model : BuildBodyModels(scenario, [&](const MeshSource& s, const std::string& f) {
-         return assets.Get(s, scenario.file, f);
-       }))
-    bytes += bench::MeasureBodyMemory(*model).total();
+  for (const auto& model : ensemble::SampleModels(scenario, &assets)) bytes += bench::MeasureBodyMemory(*model).total();
   const nlohmann::json j = {{"spec", request.ensemble}, {"samples_timed", n}, {"threads", request.threads},
                             {"samples_per_second", {{"threads_1", n / one}, {"threads_n", n / many}}},
                             {"seconds_per_sample", {{"threads_1", one / n}, {"threads_n", many / n}}},

@@ -2,10 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
-
-#include "dymesh/core/units.h"
 
 namespace dymesh {
 namespace {
@@ -159,16 +156,6 @@ std::vector<PosedBody> Pose(const Scenario& scenario, const std::vector<std::sha
   return bodies;
 }
 
-// a length in the scenario's units, for messages
-std::string LengthText(const Scenario& scenario, double metres) {
-  char buf[64];
-  if (scenario.units == UnitSystem::kUS)
-    std::snprintf(buf, sizeof buf, "%.4g in", metres / units::kInch);
-  else
-    std::snprintf(buf, sizeof buf, "%.4g m", metres);
-  return buf;
-}
-
 // moves body i along its velocity relative to the named body until `gap` remains
 void PlaceAtContact(Scenario* scenario, int i, const std::vector<PosedBody>& bodies) {
   BodySpec& body = scenario->bodies[i];
@@ -207,7 +194,7 @@ std::vector<PairPlacement> PlaceBodies(Scenario* scenario, const std::vector<std
     const double depth = -p.gap;
     if (!p.meet || depth <= scenario->contact.contact_tolerance) continue;
     const std::string names = "\"" + scenario->bodies[p.a].name + "\" and \"" + scenario->bodies[p.b].name + "\"";
-    const std::string what = names + " overlap by " + LengthText(*scenario, depth) + " at t = 0";
+    const std::string what = names + " overlap by " + LengthText(scenario->units, depth) + " at t = 0";
     if (!scenario->allow_initial_overlap)
       throw InputError(scenario->file, "bodies[" + std::to_string(p.b) + "].initial.position",
                        what + " (deeper than the contact tolerance): move them apart, use \"place_at_contact\", or "

@@ -5,36 +5,22 @@
 #include <stdexcept>
 #include <string>
 
-#include "dymesh/core/placement.h"
 #include "dymesh/core/separation.h"
 
 namespace dymesh {
 
-void RefuseMovingFixedBodies(const Scenario& scenario) {
-  // a velocity given to a fixed body would be dropped, and its kinetic energy would break the energy
-  // account
-  for (std::size_t i = 0; i < scenario.bodies.size(); ++i) {
-    const BodySpec& b = scenario.bodies[i];
-    if (b.motion == MotionModel::kFixed && (b.initial.velocity.norm() > 0.0 || b.initial.omega.norm() > 0.0))
-      throw InputError(scenario.file, "bodies[" + std::to_string(i) + "].initial",
-                       "a body with motion \"fixed\" does not move: expected no speed, velocity or yaw_rate");
-  }
-}
-
 Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
                        const LocatorFactory& make_locator)
     : scenario_(scenario) {
-  RefuseMovingFixedBodies(scenario_);
-  // bodies placed at contact; an initial overlap refused or warned
-  placements_ = PlaceBodies(&scenario_, models);
+  // bodies placed at contact; a fixed body given motion, a deep overlap or an unstable step refused
+  const RunStart start = CheckRunStart(&scenario_, models);
+  placements_ = start.placements;
+  guide_ = start.guide;
   std::vector<RigidState> initial;
   for (const BodySpec& b : scenario_.bodies) {
     initial.push_back(b.initial);
     rest_height_.push_back(b.initial.position.z());
   }
-  // refuse a step the host cannot integrate stably for the stiffest pair
-  guide_ = GuideTimeStep(scenario_, models);
-  RefuseUnstableStep(scenario_, guide_);
   engine_ = std::make_unique<ContactEngine>(std::move(models), initial, scenario_.contact, make_locator);
   for (std::size_t i = 0; i < scenario_.bodies.size(); ++i)
     engine_->SetMotion(static_cast<int>(i), scenario_.bodies[i].motion);

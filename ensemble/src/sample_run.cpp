@@ -72,7 +72,7 @@ bool SampleRecord::in_statistics() const {
 
 SharedAssets::SharedAssets() : device_(std::make_shared<const accel::EmbreeDevice>()) {}
 
-TriMesh SharedAssets::Get(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
+TriMesh MeshCache::Get(const MeshSource& source, const std::string& scenario_file, const std::string& field) {
   // the key: everything BuildBodyMesh reads
   const std::string key = source.file + "|" + std::to_string(source.scale) + "|" + source.axes[0] + source.axes[1] +
                           source.axes[2] + "|" + std::to_string(source.fit_length.value_or(0)) + "|" +
@@ -116,16 +116,19 @@ Scenario SampleScenario(const Spec& spec, const std::vector<double>& values) {
   return ParseScenario(j.dump(), spec.scenario_file);
 }
 
+std::vector<std::shared_ptr<const BodyModel>> SampleModels(const Scenario& scenario, MeshCache* meshes) {
+  return BuildBodyModels(scenario, [&](const MeshSource& source, const std::string& field) {
+    return meshes->Get(source, scenario.file, field);
+  });
+}
+
 SampleRecord RunSample(const Spec& spec, int index, const std::vector<double>& values, SharedAssets* meshes,
                        double time_limit) {
   const auto start = std::chrono::steady_clock::now();
   Json record = RecordHead(spec, index, values);
   try {
     const Scenario scenario = SampleScenario(spec, values);
-    const auto models = BuildBodyModels(scenario, [&](const MeshSource& source, const std::string& field) {
-      return meshes->Get(source, scenario.file, field);
-    });
-    Simulation sim(scenario, models, accel::MakeEmbreeLocatorFactory(meshes->device()));
+    Simulation sim(scenario, SampleModels(scenario, meshes), accel::MakeEmbreeLocatorFactory(meshes->device()));
     // the wall-clock limit, checked between steps
     auto within_limit = [&](double) {
       return !(time_limit > 0.0) ||

@@ -10,6 +10,7 @@
 #include <limits>
 #include <sstream>
 
+#include "dymesh/core/run_start.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/ensemble/random_stream.h"
 #include "dymesh/ensemble/sample_run.h"
@@ -133,7 +134,9 @@ Distribution ParseDistribution(const Reader& r, const Json& j, const std::string
     if (!(d.b > d.a)) r.Fail(at + ".high", "expected high > low");
   } else if (kind == "normal" || kind == "truncated_normal") {
     d.kind = kind == "normal" ? DistributionKind::kNormal : DistributionKind::kTruncatedNormal;
-    // mean and sd, or a value with its 95 % band (sd = band / 1.96)
+    // mean and sd, or a value with its 95 % band (sd = band / 1.96): one form, never both
+    if ((p.contains("value") || p.contains("band95")) && (p.contains("mean") || p.contains("sd")))
+      r.Fail(at, "give mean and sd, or value and band95, not both (one would be ignored)");
     if (p.contains("band95")) {
       d.a = num("value"), d.b = num("band95") / 1.959963984540054;
     } else {
@@ -316,6 +319,25 @@ void ParseCorrelation(const Reader& r, const Json& j, Spec* spec) {
   spec->correlation.cholesky = llt.matrixL();
 }
 
+// keys a design does not read: `samples` where the design counts its own runs (grid: the levels,
+// one-at-a-time: the inputs, table: the rows), `table` beside another design, `levels` beside
+// another design than grid
+void RefuseKeysTheDesignIgnores(const Reader& r, const Json& j, Design design) {
+  const char* name = kDesignKeys[static_cast<int>(design)];
+  const char* count = design == Design::kGrid         ? "the product of the inputs' levels"
+                      : design == Design::kOneAtATime ? "1 + 2 x the inputs"
+                      : design == Design::kTable      ? "the rows of table"
+                                                      : nullptr;
+  if (count != nullptr && j.contains("samples"))
+    r.Fail("samples", std::string("the design \"") + name + "\" sets its own run count (" + count + "): remove samples");
+  if (design != Design::kTable && j.contains("table"))
+    r.Fail("table", std::string("is read only by the design \"table\"; this spec's design is \"") + name + "\"");
+  for (std::size_t i = 0; design != Design::kGrid && i < j["inputs"].size(); ++i)
+    if (j["inputs"][i].contains("levels"))
+      r.Fail("inputs[" + std::to_string(i) + "].levels",
+             std::string("is read only by the design \"grid\"; this spec's design is \"") + name + "\"");
+}
+
 // grid, one-at-a-time and table designs: their sample count, and the table's rows
 void SizeDeterministicDesign(const Reader& r, const Json& j, Spec* spec) {
   const std::size_t k = spec->inputs.size();
@@ -358,8 +380,21 @@ bool IsQuantityOf(const Scenario& scenario, const Json& name, bool observable) {
   return body && (among(kOutputQuantities) || (observable && among(kMeasuredQuantities)));
 }
 
-// every input at its median, then each alone at its extremes (within its bounds): the scenario
-// must take them, so that a path or a distribution it cannot take is refused before any sample runs
+// the sample's scenario as a run starts it: parsed, its bodies built (meshes from `meshes`), and
+// what a run refuses before its first step (placement, a fixed body given motion, the stable step)
+void StartSample(const Spec& spec, const std::vector<double>& values, MeshCache* meshes) {
+  Scenario scenario = SampleScenario(spec, values);
+  CheckRunStart(&scenario, SampleModels(scenario, meshes));
+}
+
+// input i at `value`, for messages: inputs[1] ("speed" = 45), or a CRASH3 preset's input
+std::string InputAt(const Spec& spec, std::size_t i, double value) {
+  const std::string named = "\"" + spec.inputs[i].name + "\" = " + Json(value).dump();
+  return spec.inputs[i].pointer.empty() ? "crash3 input " + named : "inputs[" + std::to_string(i) + "] (" + named + ")";
+}
+
+// every input at its median, then each alone at its extremes (within its bounds): a run must start
+// from them, so that a path or a distribution it cannot take is refused before any sample runs
 void TrySampleScenarios(const Reader& r, const Spec& spec) {
   const std::size_t k = spec.inputs.size();
   auto clamp = [&](std::size_t i, double u) {
@@ -367,15 +402,15 @@ void TrySampleScenarios(const Reader& r, const Spec& spec) {
   };
   std::vector<double> median(k);
   for (std::size_t i = 0; i < k; ++i) median[i] = clamp(i, 0.5);
+  MeshCache meshes;  // each mesh source built once for all the trials
+  // the trial's inputs named (input i alone, or all of them at their medians when i == k)
   auto attempt = [&](const std::vector<double>& values, std::size_t i) {
     try {
-      SampleScenario(spec, values);
+      StartSample(spec, values, &meshes);
     } catch (const InputError& e) {
-      const std::string value = i < k ? " = " + Json(values[i]).dump() : "";
-      const std::string which = i == k                       ? "inputs (each at its median)"
-                                : spec.inputs[i].pointer.empty() ? "crash3 input \"" + spec.inputs[i].name + "\"" + value
-                                                                 : "inputs[" + std::to_string(i) + "] (\"" + spec.inputs[i].name + "\"" + value + ")";
-      r.Fail(which, "the scenario refuses this sample: " + std::string(e.what()));
+      std::string which = i < k ? InputAt(spec, i, values[i]) : "";
+      for (std::size_t m = 0; i == k && m < k; ++m) which += (m ? ", " : "inputs at their medians: ") + InputAt(spec, m, values[m]);
+      r.Fail(which.empty() ? "inputs" : which, "the scenario refuses this sample: " + std::string(e.what()));
     }
   };
   attempt(median, k);
@@ -443,6 +478,7 @@ Spec LoadSpec(const std::string& path) {
     }
     spec.design = static_cast<Design>(key - kDesignKeys.begin());
   }
+  RefuseKeysTheDesignIgnores(r, j, spec.design);
   if (j.contains("samples")) {
     const double n = r.Number(j["samples"], "samples");
     if (n < 1 || n > 1e7 || std::floor(n) != n) r.Fail("samples", "expected an integer in 1..1e7");

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <utility>
 
+#include "dymesh/core/run_start.h"
 #include "dymesh/core/units.h"
 #include "json_path.h"
 
@@ -275,7 +276,8 @@ constexpr PhysicalRange kTiltRange{-180.0, 180.0, -45.0, 45.0, "roll or pitch [d
 constexpr PhysicalRange kMassRange{1.0, 1e7, 50.0, 60000.0, "mass"};
 constexpr PhysicalRange kPositionRange{-1e5, 1e5, -1e4, 1e4, "position coordinate"};  // [m]
 constexpr PhysicalRange kCgRange{-100.0, 100.0, -20.0, 20.0, "CG coordinate"};        // [m] from the mesh origin
-constexpr PhysicalRange kBoxRange{1e-3, 1000.0, 0.01, 30.0, "box size"};              // [m]
+constexpr PhysicalRange kBoxRange{kBodySizeRange.hard_lo, kBodySizeRange.hard_hi, kBodySizeRange.lo, kBodySizeRange.hi,
+                                  "box size"};  // [m], as a mesh file's built extent (CheckRunStart)
 constexpr PhysicalRange kGyrationRange{0.01, 100.0, 0.1, 15.0, "radius of gyration sqrt(inertia / mass)"};  // [m]
 constexpr PhysicalRange kFrictionRange{0.0, 10.0, 0.0, 1.5, "friction coefficient"};
 constexpr PhysicalRange kDurationRange{0.0, 1e4, 0.0, 10.0, "duration [s]"};
@@ -332,6 +334,17 @@ void ParseTime(const Source& src, const Json& j, const std::string& path, Scenar
     Fail(src, Join(path, "duration"),
          "expected at most 1e7 steps (duration / step), got " + FormatDouble(s->duration / s->time_step));
   if (const Json* v = Find(j, "stop_at_separation")) s->stop_at_separation = ReadBool(src, *v, Join(path, "stop_at_separation"));
+}
+
+// keys that act only with another option: refused where they would do nothing
+void RefuseIdleContactKeys(const Source& src, const Json& j, const std::string& path, const ContactOptions& o) {
+  if (Find(j, "specified_direction") && o.search_direction != SearchDirection::kSpecified)
+    Fail(src, Join(path, "specified_direction"),
+         "acts only with \"search_direction\": \"specified\"; this search does not use it: remove it or set that search");
+  for (const char* key : {"pushback_reduction", "pushback_reduce_limit"})
+    if (Find(j, key) && o.version != 4)
+      Fail(src, Join(path, key), "acts only in version 4 (pushback reduction); contact.version is " +
+                                     std::to_string(o.version) + ": remove it or set \"version\": 4");
 }
 
 // "contact": every key optional, defaults from ContactOptions
@@ -401,6 +414,7 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
     o->pushback_reduction = ReadNumber(src, *v, Join(path, "pushback_reduction"), kUnitIntervalOpen);
   if (const Json* v = Find(j, "friction_null_band"))
     o->friction_null_band = ReadNumber(src, *v, Join(path, "friction_null_band"), kNonNegative) * src.units.speed;
+  RefuseIdleContactKeys(src, j, path, *o);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -483,6 +497,10 @@ MeshSource ParseMesh(const Source& src, const Json& j, const std::string& path) 
   mesh.file = ResolvePath(src, name);
   if (const std::string problem = NotARegularFile(mesh.file); !problem.empty())
     Fail(src, field, problem + ": " + mesh.file);
+  // fit_length sets the size: a unit or scale beside it would do nothing
+  for (const char* key : {"unit", "scale"})
+    if (Find(j, "fit_length") != nullptr && Find(j, key) != nullptr)
+      Fail(src, Join(path, key), "has no effect with \"fit_length\", which scales the mesh to that length: give one or the other");
   // unit times scale: metres per file unit
   double unit = 1.0;
   if (const Json* v = Find(j, "unit"))
@@ -614,6 +632,10 @@ BodyFields ParseBodyFields(const Source& src, const Json& j, const std::string& 
                                         {"gravity", MotionModel::kGravityGround},
                                         {"fixed", MotionModel::kFixed}});
   if (const Json* v = Find(j, "stiffness")) ParseStiffnessSet(src, *v, Join(path, "stiffness"), &b.stiffness);
+  // a rigid body takes no crush: a stiffness beside "rigid": true would never act
+  if (b.rigid.value_or(false) && Find(j, "stiffness") != nullptr)
+    Fail(src, Join(path, "stiffness"), "a rigid body takes no crush, so this stiffness would never act: remove it, "
+                                       "or set \"rigid\": false");
   return b;
 }
 
@@ -720,6 +742,27 @@ std::optional<PlacementRequest> ParsePlaceAtContact(const Source& src, const Jso
   return r;
 }
 
+// a planar body holds its height: a vertical velocity would be dropped (and delta-V and the energy
+// balance read wrong)
+void RefuseVerticalVelocityOfPlanarBody(const Source& src, const BodySpec& body, const Json& initial,
+                                        const std::string& path) {
+  if (body.motion != MotionModel::kPlanar || body.initial.velocity.z() == 0.0) return;
+  Fail(src, At(Join(path, "velocity"), 2),
+       "a body with motion \"planar\" holds its height: expected 0, got " + Describe(initial["velocity"][2]) + " " +
+           SpeedUnit(src).name + " (give motion \"free\" or \"gravity\" for vertical motion)");
+}
+
+// a rigid body given a stiffness by its vehicle file (or one here, on a vehicle its file makes rigid):
+// each object alone was refused that (ParseBodyFields); across the two, a vehicle file that serves other
+// scenarios is kept, and the stiffness that never acts is warned
+void WarnStiffnessOfRigidBody(const Source& src, const BodyFields& fields, const BodySpec& body, const std::string& path) {
+  const bool stiffness = std::any_of(fields.stiffness.begin(), fields.stiffness.end(), [](const auto& k) { return k.has_value(); });
+  if (!body.rigid || !stiffness || src.warnings == nullptr) return;
+  src.warnings->push_back({"unused_stiffness", Join(path, "stiffness"),
+                           "\"" + body.name + "\" is rigid and takes no crush, so the stiffness it has from its vehicle "
+                           "file or this scenario (the one sets \"rigid\", the other the stiffness) never acts"});
+}
+
 // one scenario body: its vehicle file, its own keys, then the checks on the merged result
 BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   ExpectObject(src, j, path);
@@ -741,6 +784,7 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   body.mesh = *fields.mesh;
   // motion, then mass (only a fixed body may go without)
   body.motion = fields.motion.value_or(MotionModel::kPlanar);
+  RefuseVerticalVelocityOfPlanarBody(src, body, j["initial"], Join(path, "initial"));
   if (!fields.mass && body.motion != MotionModel::kFixed)
     Fail(src, Join(path, "mass"), "missing: give mass or weight (only a body with motion \"fixed\" may omit both)");
   body.mass = fields.mass.value_or(0.0);
@@ -754,6 +798,7 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   body.restitution = fields.restitution.value_or(0.0);
   body.friction = fields.friction.value_or(0.0);
   body.rigid = fields.rigid.value_or(false);
+  WarnStiffnessOfRigidBody(src, fields, body, path);
   // stiffness: a deformable body needs A or B on every surface
   for (int s = 0; s < kBodySurfaceCount; ++s) {
     body.stiffness[s] = fields.stiffness[s].value_or(Stiffness{});

@@ -433,6 +433,7 @@ TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
   struct Case {
     std::string extra, message;
   };
+  const std::string kBoxScenario = DYMESH_DATA_DIR "/scenarios/validation/box_barrier_30mph.json";
   const Case cases[] = {
       {R"(, {"name": "x", "path": "vehicles[3].mass", "distribution": {"fixed": 1}})",
        "inputs[2].path: \"vehicles[3].mass\" does not lead into the scenario"},
@@ -462,7 +463,21 @@ TEST_F(Ensemble, BadSpecsAreRefusedBeforeAnySample) {
       {R"(, {"name": "x", "path": "bodies[0].restitution", "distribution": {"fixed": 0.1}})",
        "inputs[2].path: \"bodies[0].restitution\" is already set by inputs[1]"},
       {R"(, {"name": "x", "path": "bodies[0].friction", "distribution": {"uniform": {"low": 20, "high": 30}}})",
-       "inputs (each at its median): the scenario refuses this sample: "},
+       "inputs at their medians: inputs[0] (\"speed\" = 30.0), inputs[1] (\"restitution\" = 0.1), inputs[2] (\"x\" = 25.0): "
+       "the scenario refuses this sample: "},
+      // what a run refuses before its first step (2026-11-25: every sample ran as failed_input, exit 3): a
+      // position that overlaps the wall at every value, or at one extreme; a speed or a yaw rate on the fixed wall
+      {R"(, {"name": "x", "path": "bodies[0].initial.position[0]", "distribution": {"uniform": {"low": 40, "high": 50}}})",
+       "inputs at their medians: inputs[0] (\"speed\" = 30.0), inputs[1] (\"restitution\" = 0.1), inputs[2] (\"x\" = 45.0): "
+       "the scenario refuses this sample: " + kBoxScenario + ": bodies[1].initial.position: \"box\" and \"wall\" overlap by 44.5 in"},
+      {R"(, {"name": "x", "path": "bodies[0].initial.position[0]", "distribution": {"uniform": {"low": -40, "high": 20}}})",
+       "inputs[2] (\"x\" = 19.9999"},
+      {R"(, {"name": "x", "path": "bodies[1].initial.speed", "distribution": {"uniform": {"low": 0.5, "high": 1}}})",
+       "inputs at their medians: inputs[0] (\"speed\" = 30.0), inputs[1] (\"restitution\" = 0.1), inputs[2] (\"x\" = 0.75): "
+       "the scenario refuses this sample: " + kBoxScenario + ": bodies[1].initial: a body with motion \"fixed\" does not move"},
+      {R"(, {"name": "x", "path": "bodies[1].initial.yaw_rate", "distribution": {"uniform": {"low": 3, "high": 5}}})",
+       "inputs at their medians: inputs[0] (\"speed\" = 30.0), inputs[1] (\"restitution\" = 0.1), inputs[2] (\"x\" = 4.0): "
+       "the scenario refuses this sample: " + kBoxScenario + ": bodies[1].initial: a body with motion \"fixed\" does not move"},
       // read as strictly as a scenario (2026-11-25): a duplicate key kept only its last value, a number out
       // of range and malformed JSON gave the JSON library's own message
       {R"(, {"name": "x", "name": "y", "path": "bodies[0].friction", "distribution": {"fixed": 0.1}})",
@@ -540,6 +555,38 @@ TEST_F(Ensemble, BadSpecKeysAndSampleCountsAreRefusedBeforeAnySample) {
   const ProcessResult r = Dymesh({"ensemble", spec, "--samples", "3", "--out", (dir_ / "out").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("spec.json: --samples: this design has 2 samples; expected at most that, got 3"), std::string::npos) << r.err;
+}
+
+// keys the spec's design does not read, and a normal given in both forms (fuzzing, 2026-11-25: each was
+// accepted and ignored)
+TEST_F(Ensemble, SpecKeysThatWouldBeIgnoredAreRefused) {
+  struct Case {
+    const char* design;
+    const char* pointer;
+    const char* value;
+    std::string message;
+  };
+  const Case cases[] = {
+      {"grid", "/samples", "5", "samples: the design \"grid\" sets its own run count"},
+      {"one_at_a_time", "/samples", "5", "samples: the design \"one_at_a_time\" sets its own run count"},
+      {"table", "/samples", "2", "samples: the design \"table\" sets its own run count"},
+      {"latin_hypercube", "/table", "[[30, 0.1]]", "table: is read only by the design \"table\"; this spec's design is \"latin_hypercube\""},
+      {"monte_carlo", "/inputs/0/levels", "4", "inputs[0].levels: is read only by the design \"grid\""},
+      {"latin_hypercube", "/inputs/0/distribution", R"({"normal": {"mean": 30, "sd": 1, "value": 31, "band95": 4}})",
+       "inputs[0].distribution.normal: give mean and sd, or value and band95, not both"},
+      {"latin_hypercube", "/inputs/0/distribution", R"({"truncated_normal": {"value": 30, "band95": 4, "sd": 1, "low": 20, "high": 40}})",
+       "inputs[0].distribution.truncated_normal: give mean and sd, or value and band95, not both"},
+  };
+  for (const Case& c : cases) {
+    const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 5, c.design);
+    nlohmann::json j = nlohmann::json::parse(ReadFile(spec));
+    if (std::string(c.design) == "table") j["table"] = {{30, 0.1}, {32, 0.1}};
+    j[nlohmann::json::json_pointer(c.pointer)] = nlohmann::json::parse(c.value);
+    std::ofstream(spec) << j.dump();
+    const ProcessResult r = Dymesh({"ensemble", spec, "--out", (dir_ / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << c.pointer << " " << c.value;
+    EXPECT_NE(r.err.find("spec.json: " + c.message), std::string::npos) << r.err;
+  }
 }
 
 // CRASH3 presets that fuzzing found accepted (2026-11-24): on the rigid wall (stiffness never used), the

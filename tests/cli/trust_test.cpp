@@ -348,6 +348,7 @@ TEST_F(Trust, ImplausibleValuesRunWithAWarningNamingTheField) {
 TEST_F(Trust, AllRigidScenarioIsRefused) {
   Json j = BoxScenario();
   j["bodies"][0]["rigid"] = true;
+  j["bodies"][0].erase("stiffness");  // a rigid body's stiffness is refused first
   const ProcessResult r = Run(j);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Has(r.err, "s.json: bodies: every body is rigid: at least one must be deformable")) << r.err;
@@ -366,7 +367,7 @@ std::string BoxObj(int copies) {
 // the box scenario with the car's mesh from `file` (metres, scaled to the car's length)
 Json WithCarMesh(const std::string& file) {
   Json j = BoxScenario();
-  j["bodies"][0]["mesh"] = {{"file", file}, {"unit", "m"}, {"fit_length", 180}};
+  j["bodies"][0]["mesh"] = {{"file", file}, {"fit_length", 180}};
   return j;
 }
 
@@ -375,6 +376,35 @@ TEST_F(Trust, MeshOfDuplicatedFacesIsRefusedWithTheCount) {
   const ProcessResult r = Run(WithCarMesh("doubled.obj"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Has(r.err, "doubled.obj: bodies[0].mesh: 12 duplicated faces")) << r.err;
+}
+
+// a mesh file's built size in the range of a generated box's (fuzzing, 2026-11-25: a car mesh scaled to
+// 4.6 um or to 457 m passed check with exit 0)
+TEST_F(Trust, MeshFileBodiesOfImpossibleSizeAreRefusedAndImplausibleOnesWarned) {
+  Write("cube.obj", BoxObj(1));  // 1 m
+  const std::pair<Json, std::string> refused[] = {
+      {{{"file", "cube.obj"}, {"scale", 1e-6}}, "(mesh.unit times mesh.scale: 1e-06 m per file unit) builds a body 3.937e-05 in"},
+      {{{"file", "cube.obj"}, {"fit_length", 0.01}}, "(fit_length 0.01 in) builds a body 0.01 in"},
+      {{{"file", "cube.obj"}, {"scale", 2000}}, "builds a body 7.874e+04 in across at its largest; expected a physically "
+                                                 "possible body size in 0.03937 in .. 3.937e+04 in: check mesh.unit and mesh.scale"},
+  };
+  for (const auto& [mesh, message] : refused) {
+    Json j = BoxScenario();
+    j["bodies"][0]["mesh"] = mesh;
+    const ProcessResult r = Run(j);
+    EXPECT_EQ(r.exit_code, 2) << mesh.dump();
+    EXPECT_TRUE(Has(r.err, "s.json: bodies[0].mesh")) << r.err;
+    EXPECT_TRUE(Has(r.err, message)) << r.err;
+  }
+  // 40 m: run, with a warning naming the mesh field (the wall moved out of its way)
+  Json j = BoxScenario();
+  j["bodies"][0]["mesh"] = {{"file", "cube.obj"}, {"scale", 40}};
+  j["bodies"][1]["initial"]["position"] = {1000, 0, 0};
+  const ProcessResult check = Dymesh({"check", Write("s.json", j.dump())});
+  EXPECT_EQ(check.exit_code, 3) << check.err;
+  EXPECT_TRUE(Has(check.out, "warning [implausible_value] bodies[0].mesh: the mesh file ")) << check.out;
+  EXPECT_TRUE(Has(check.out, "builds a body 1575 in across at its largest, outside the range met in vehicle collisions, "
+                             "0.3937 in .. 1181 in")) << check.out;
 }
 
 TEST_F(Trust, MalformedObjLinesAreRefusedWithTheLine) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -38,8 +39,7 @@ constexpr const char* kGoodScenario = R"({
               "calc_nabor_interval": 7},
   "bodies": [
     {"name": "car",
-     "mesh": {"file": "meshes/car.obj", "unit": "mm", "scale": 2, "axes": ["x", "z", "-y"], "fit_length": 180,
-              "subdivisions": 1},
+     "mesh": {"file": "meshes/car.obj", "unit": "mm", "scale": 2, "axes": ["x", "z", "-y"], "subdivisions": 1},
      "weight": 3000, "cg": [10, 0, -20], "inertia": [3800, 20000, 22000],
      "restitution": 0.1, "friction": 0.5,
      "stiffness": {"default": {"A": 200, "B": 75},
@@ -138,8 +138,10 @@ TEST_F(ScenarioFiles, GoodUsScenarioConverts) {
   EXPECT_FALSE(car.mesh.box);
   EXPECT_DOUBLE_EQ(car.mesh.scale, 0.002);           // mm times 2
   EXPECT_EQ(car.mesh.axes, (std::array<std::string, 3>{"x", "z", "-y"}));
-  ASSERT_TRUE(car.mesh.fit_length.has_value());
-  EXPECT_DOUBLE_EQ(*car.mesh.fit_length, 4.572);     // 180 in
+  EXPECT_FALSE(car.mesh.fit_length.has_value());
+  Json fit = Good();
+  fit["bodies"][0]["mesh"] = {{"file", "meshes/car.obj"}, {"fit_length", 180}};
+  EXPECT_DOUBLE_EQ(*ParseScenario(fit.dump(), ScenarioPath()).bodies[0].mesh.fit_length, 4.572);  // 180 in
   EXPECT_EQ(car.mesh.subdivisions, 1);
   EXPECT_DOUBLE_EQ(car.mass, 1360.77711);            // 3000 lb
   ASSERT_TRUE(car.cg.has_value());
@@ -201,11 +203,18 @@ TEST_F(ScenarioFiles, GoodUsScenarioConverts) {
 
 TEST_F(ScenarioFiles, GoodScenarioMeshesBuild) {
   const Scenario s = ParseScenario(kGoodScenario, ScenarioPath());
-  // 4000 x 1000 x 1600 mm y-up box, doubled, axes (x, z, -y), fitted to 180 in long
+  // 4000 x 1000 x 1600 mm y-up box, doubled (scale 2), axes (x, z, -y)
   const MeshStats car = ComputeStats(BuildBodyMesh(s.bodies[0].mesh, s.file, "bodies[0].mesh"));
-  EXPECT_NEAR(car.max.x() - car.min.x(), 4.572, 1e-9);
-  EXPECT_NEAR(car.max.y() - car.min.y(), 4.572 * 0.4, 1e-9);
-  EXPECT_NEAR(car.max.z() - car.min.z(), 4.572 * 0.25, 1e-9);
+  EXPECT_NEAR(car.max.x() - car.min.x(), 8.0, 1e-9);
+  EXPECT_NEAR(car.max.y() - car.min.y(), 3.2, 1e-9);
+  EXPECT_NEAR(car.max.z() - car.min.z(), 2.0, 1e-9);
+  // the same fitted to 180 in long
+  MeshSource fitted = s.bodies[0].mesh;
+  fitted.fit_length = 4.572;
+  const MeshStats fit = ComputeStats(BuildBodyMesh(fitted, s.file, "bodies[0].mesh"));
+  EXPECT_NEAR(fit.max.x() - fit.min.x(), 4.572, 1e-9);
+  EXPECT_NEAR(fit.max.y() - fit.min.y(), 4.572 * 0.4, 1e-9);
+  EXPECT_NEAR(fit.max.z() - fit.min.z(), 4.572 * 0.25, 1e-9);
   const MeshStats wall = ComputeStats(BuildBodyMesh(s.bodies[2].mesh, s.file, "bodies[2].mesh"));
   EXPECT_EQ(wall.open_edges, 0);
 }
@@ -413,6 +422,56 @@ TEST_F(ScenarioFiles, RefusesOtherImpossibleInputs) {
   const std::string weight = "\"weight\":3000";
   text.replace(text.find(weight), weight.size(), weight + "," + weight);
   ExpectRefused(text, ScenarioPath(), "bodies[0].weight");
+}
+
+// keys that would do nothing where they stand (fuzzing, 2026-11-25: each was accepted unsaid)
+TEST_F(ScenarioFiles, RefusesKeysThatWouldHaveNoEffect) {
+  Json direction = Good();
+  direction["contact"]["search_direction"] = "velocity";
+  EXPECT_NE(ExpectRefused(direction, "contact.specified_direction").find("acts only with \"search_direction\": \"specified\""),
+            std::string::npos);
+  for (const char* key : {"pushback_reduction", "pushback_reduce_limit"}) {
+    Json version3 = Good();
+    version3["contact"]["version"] = 3;
+    version3["contact"].erase("pushback_reduction");
+    version3["contact"][key] = 0.1;
+    EXPECT_NE(ExpectRefused(version3, std::string("contact.") + key).find("acts only in version 4"), std::string::npos);
+    version3["contact"].erase("version");  // version 3 by default
+    ExpectRefused(version3, std::string("contact.") + key);
+  }
+  for (const char* key : {"unit", "scale"}) {
+    Json fit = Good();
+    fit["bodies"][0]["mesh"] = {{"file", "meshes/car.obj"}, {"fit_length", 180}, {key, key == std::string("unit") ? Json("mm") : Json(2)}};
+    EXPECT_NE(ExpectRefused(fit, std::string("bodies[0].mesh.") + key).find("has no effect with \"fit_length\""),
+              std::string::npos);
+  }
+  Json vertical = Good();
+  vertical["bodies"][0]["initial"].erase("speed");
+  vertical["bodies"][0]["initial"]["velocity"] = {30, 0, 5};
+  EXPECT_NE(ExpectRefused(vertical, "bodies[0].initial.velocity[2]").find("holds its height: expected 0, got 5 mph"),
+            std::string::npos);
+  vertical["bodies"][0]["motion"] = "free";
+  EXPECT_NO_THROW(ParseScenario(vertical.dump(), ScenarioPath()));
+  Json rigid = Good();
+  rigid["bodies"][2]["stiffness"] = {{"default", {{"A", 300}, {"B", 100}}}};
+  EXPECT_NE(ExpectRefused(rigid, "bodies[2].stiffness").find("a rigid body takes no crush"), std::string::npos);
+}
+
+// a vehicle file's stiffness on a body the scenario makes rigid: the vehicle file serves other
+// scenarios, so the body is kept, with a warning that its stiffness never acts
+TEST_F(ScenarioFiles, WarnsOfAVehicleStiffnessOnABodyMadeRigid) {
+  Json j = Good();
+  j["bodies"][1]["rigid"] = true;
+  const Scenario s = ParseScenario(j.dump(), ScenarioPath());
+  ASSERT_TRUE(s.bodies[1].rigid);
+  const auto unused = std::find_if(s.warnings.begin(), s.warnings.end(), [](const RunWarning& w) { return w.code == "unused_stiffness"; });
+  ASSERT_NE(unused, s.warnings.end());
+  EXPECT_EQ(unused->field, "bodies[1].stiffness");
+  EXPECT_NE(unused->message.find("\"sedan\" is rigid and takes no crush"), std::string::npos) << unused->message;
+  // the vehicle file itself rigid with a stiffness: refused there
+  WriteText(dir_ / "vehicles" / "sedan.json", R"({"units": "SI", "mesh": {"file": "../meshes/car.obj"}, "mass": 1500,
+    "rigid": true, "stiffness": {"default": {"A": 50000, "B": 700000}}})");
+  ExpectRefused(Good().dump(), Abs("vehicles/sedan.json"), "stiffness");
 }
 
 TEST(RepositoryScenarios, AllParse) {

@@ -24,7 +24,7 @@ fs::path WriteFiles(const std::string& vehicle_weight, const std::string& top_co
   Write(dir, "box.obj",
         "v 0 0 0\nv 100 0 0\nv 100 60 0\nv 0 60 0\nv 0 0 30\nv 100 0 30\nv 100 60 30\nv 0 60 " + top_corner + "\n"
         "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n");
-  Write(dir, "car.json", R"({"units": "US", "mesh": {"file": "box.obj"}, "weight": )" + vehicle_weight +
+  Write(dir, "car.json", R"({"units": "US", "mesh": {"file": "box.obj", "unit": "in"}, "weight": )" + vehicle_weight +
                              R"(, "stiffness": {"default": {"A": 300, "B": 100}}})");
   Write(dir, "scenario.json", R"({"units": "US", "time": {"step": 0.0005, "duration": 0.2},
     "bodies": [{"name": "car", "vehicle": "car.json", "initial": {"position": [0, 0, 0], "speed": 30}},

@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -9,6 +10,7 @@
 #include "dymesh/core/rigid_body.h"
 #include "dymesh/core/run_status.h"
 #include "dymesh/core/stiffness.h"
+#include "dymesh/core/units.h"
 
 /// The scenario: a run's definition in SI, as the JSON loader (dymesh/io/scenario_json.h) or a
 /// host fills it.
@@ -79,5 +81,15 @@ struct Scenario {
   std::vector<BodySpec> bodies;
   std::vector<RunWarning> warnings;  ///< implausible values and accepted oddities found at load
 };
+
+/// A length in a unit system's length unit, to 4 digits, for messages: "1.5 in", "0.04 m".
+inline std::string LengthText(UnitSystem system, double metres) {
+  char text[64];
+  if (system == UnitSystem::kUS)
+    std::snprintf(text, sizeof text, "%.4g in", metres / units::kInch);
+  else
+    std::snprintf(text, sizeof text, "%.4g m", metres);
+  return text;
+}
 
 }  // namespace dymesh

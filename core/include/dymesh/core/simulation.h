@@ -7,14 +7,11 @@
 #include "dymesh/core/contact_step.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/placement.h"
+#include "dymesh/core/run_start.h"
 #include "dymesh/core/time_step_guide.h"
 
 /// A self-contained run: bodies, contact engine, rigid-body host and recorded time history.
 namespace dymesh {
-
-/// Throws InputError (field bodies[i].initial) for a body with motion "fixed" given a velocity or
-/// angular rate; every Simulation calls it (scenario files, the C ABI, Python), `dymesh check` too.
-void RefuseMovingFixedBodies(const Scenario& scenario);
 
 /// One recorded instant for one body.
 struct BodySample {
@@ -59,8 +56,8 @@ class Simulation {
   /// A run on body models already built (one per scenario body, in order: BuildBodyModels of
   /// dymesh/io/body_models.h, or the host's own), shared read-only between runs; the scenario's
   /// mesh sources are not read.
-  /// Throws InputError (field time.step) when the step is beyond the stable limit of the stiffest
-  /// pair (GuideTimeStep).
+  /// Throws InputError for what a run refuses before its first step (CheckRunStart): a fixed body
+  /// given motion, a deep initial overlap, a step beyond the stable limit of the stiffest pair.
   Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
              const LocatorFactory& make_locator);
 

@@ -16,18 +16,25 @@
 /// run and its record (one line of samples.jsonl).
 namespace dymesh::ensemble {
 
-/// What every sample shares read-only (thread-safe): meshes built once per mesh source, and one
-/// Embree device (each sample still builds its own scenes on it).
-class SharedAssets {
+/// Body meshes built once per mesh source and shared read-only (thread-safe).
+class MeshCache {
+ public:
+  TriMesh Get(const MeshSource& source, const std::string& scenario_file, const std::string& field);
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::shared_ptr<const TriMesh>> meshes_;
+};
+
+/// What every sample shares read-only (thread-safe): the meshes, and one Embree device (each
+/// sample still builds its own scenes on it).
+class SharedAssets : public MeshCache {
  public:
   SharedAssets();
-  TriMesh Get(const MeshSource& source, const std::string& scenario_file, const std::string& field);
   const std::shared_ptr<const accel::EmbreeDevice>& device() const { return device_; }
 
  private:
   std::shared_ptr<const accel::EmbreeDevice> device_;
-  std::mutex mutex_;
-  std::map<std::string, std::shared_ptr<const TriMesh>> meshes_;
 };
 
 /// A sample's result: the record line and the outputs the statistics use (empty unless in them).
@@ -57,6 +64,9 @@ Crash3Stiffness Crash3ToAB(const Crash3Preset& preset, double b0, double b1);
 
 /// The sample's scenario: the base with `values` at the inputs' paths (InputError when refused).
 Scenario SampleScenario(const Spec& spec, const std::vector<double>& values);
+
+/// The sample's body models, from the meshes of `meshes` (InputError when a mesh is refused).
+std::vector<std::shared_ptr<const BodyModel>> SampleModels(const Scenario& scenario, MeshCache* meshes);
 
 /// Status of a sample that ran over its wall-clock time limit: the one record that depends on the
 /// machine, so a resumed ensemble runs it again.
