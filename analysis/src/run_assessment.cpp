@@ -118,9 +118,9 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
   if (sim.separated() && std::isfinite(sim.later_meeting_time()))
     w->push_back({"may_meet_again", "time.stop_at_separation",
                   Text("the run stopped at separation, but moving on freely (no tyre or ground forces) the bodies "
-                       "may meet again at t = %.3f s, before the duration: a secondary impact this run does not "
-                       "include (delta-V and crush are the first collision's); run without stop_at_separation to "
-                       "follow it", sim.later_meeting_time())});
+                       "may meet again before the duration (their plan outlines from t = %.3f s): a secondary "
+                       "impact this run does not include (delta-V and crush are the first collision's); run "
+                       "without stop_at_separation to follow it", sim.later_meeting_time())});
   if (std::abs(s.energy_balance_error) > kEnergyBalanceTolerance)
     w->push_back({"energy_balance", "",
                   Text("energy balance error %.2f %% exceeds %.0f %%: kinetic energy lost and contact work disagree",
