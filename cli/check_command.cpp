@@ -117,9 +117,8 @@ int CheckCommand(const std::string& scenario_path, std::ostream& out) {
   std::vector<double> coarse(models.size(), 0.0);
   for (std::size_t i = 0; i < models.size(); ++i)
     if (const double edge = MedianEdgeLength(models[i]->mesh); !models[i]->rigid && edge > kCoarseEdge) coarse[i] = edge;
-  const auto count = [&](auto test) { return std::count_if(models.begin(), models.end(), test); };
   const bool coarse_pair = std::count_if(coarse.begin(), coarse.end(), [](double e) { return e > 0.0; }) >= 2;
-  const bool other_deformable = count([](const auto& m) { return !m->rigid; }) >= 2;
+  const bool other_deformable = std::count_if(models.begin(), models.end(), [](const auto& m) { return !m->rigid; }) >= 2;
   for (int i = 0; i < static_cast<int>(models.size()); ++i) {
     const CoarseNote note = coarse[i] <= 0.0 || !other_deformable ? CoarseNote::kNone
                             : coarse_pair                        ? CoarseNote::kCoarsePair

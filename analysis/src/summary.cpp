@@ -77,16 +77,6 @@ Vec3 PointVelocity(const RigidState& now, const RigidState& at, const Vec3& r) {
   return now.velocity + (rotation * now.omega).cross(rotation * (at.Rotation().transpose() * r));
 }
 
-// whether neither body of the pair moves vertically (planar or fixed): the vertical part of their
-// loads and moments other than about the vertical do not act on their motion
-bool HeightHeld(const Simulation& sim, const PairContact& c) {
-  auto held = [&](int i) {
-    const MotionModel m = sim.scenario().bodies[i].motion;
-    return m == MotionModel::kPlanar || m == MotionModel::kFixed;
-  };
-  return held(c.a) && held(c.b);
-}
-
 // a vector's part the pair's motion takes: horizontal when the height is held
 Vec3 Acting(const Vec3& v, bool horizontal) { return horizontal ? Vec3(v.x(), v.y(), 0.0) : v; }
 
@@ -97,7 +87,8 @@ PairSummary SummarizePair(const Simulation& sim, const PairContact& c) {
   PairSummary p;
   p.a = c.a;
   p.b = c.b;
-  const bool planar = HeightHeld(sim, c);
+  // neither body moves vertically: the vertical part of the loads does not act on their motion
+  const bool planar = HoldsHeight(sim.scenario().bodies[c.a].motion) && HoldsHeight(sim.scenario().bodies[c.b].motion);
   const Vec3 normal = Acting(c.normal_impulse_on_a, planar);
   p.direction = normal.squaredNorm() > 0.0 ? normal.normalized() : Vec3::Zero();
   const Sample& start = sim.history()[c.first_sample];

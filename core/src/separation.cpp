@@ -4,44 +4,24 @@
 #include <cmath>
 #include <vector>
 
-#include "dymesh/core/outline.h"
-
 namespace dymesh {
 namespace {
 
 // most poses tried before the test gives up and says the bodies may meet
 constexpr int kMaxPoses = 200;
 
-// a unit plan direction turned by an angle
+// a plan vector turned by an angle about the origin
 Vec2 Turned(const Vec2& d, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   return {c * d.x() - s * d.y(), s * d.x() + c * d.y()};
 }
 
-// a body in plan: its outline about the CG (earth frame, now) and its free motion
-struct PlanBody {
-  std::vector<Vec2> hull;             // [m] earth-frame offsets from the CG
-  Vec2 position, velocity;            // [m], [m/s] CG
-  double yaw_rate = 0.0;              // [rad/s] about the vertical
-  double radius = 0.0;                // [m] farthest outline point from the CG
-};
-
-PlanBody Plan(const BodyState& s) {
-  const Mat3 r = s.rigid.Rotation();
-  std::vector<Vec2> offsets;
-  offsets.reserve(s.vertices.size());
-  for (const Vec3& v : s.vertices) offsets.push_back((r * v).head<2>());
-  PlanBody b{ConvexHull(std::move(offsets)), s.rigid.position.head<2>(), s.rigid.velocity.head<2>(), (r * s.rigid.omega).z()};
-  for (const Vec2& q : b.hull) b.radius = std::max(b.radius, q.norm());
-  return b;
-}
-
 // the outline's earth-frame points after t seconds of free motion
-std::vector<Vec2> PosedOutline(const PlanBody& b, double t) {
+std::vector<Vec2> PosedOutline(const PlanMotion& b, double t) {
   const Vec2 centre = b.position + b.velocity * t;
   std::vector<Vec2> out;
-  out.reserve(b.hull.size());
-  for (const Vec2& q : b.hull) out.push_back(centre + Turned(q, b.yaw_rate * t));
+  out.reserve(b.outline.size());
+  for (const Vec2& q : b.outline) out.push_back(centre + Turned(q, b.yaw_rate * t));
   return out;
 }
 
@@ -60,7 +40,7 @@ double OutsideBy(const Vec2& p, const std::vector<Vec2>& outline) {
 
 // [m] every outline corner's distance out of the other outline after t seconds of free motion: a's
 // corners against b, then b's against a
-std::vector<double> Clearances(const PlanBody& a, const PlanBody& b, double t) {
+std::vector<double> Clearances(const PlanMotion& a, const PlanMotion& b, double t) {
   const std::vector<Vec2> outline_a = PosedOutline(a, t), outline_b = PosedOutline(b, t);
   std::vector<double> out;
   out.reserve(outline_a.size() + outline_b.size());
@@ -71,9 +51,18 @@ std::vector<double> Clearances(const PlanBody& a, const PlanBody& b, double t) {
 
 }  // namespace
 
-double SoonestMeeting(const BodyState& a, const BodyState& b, double horizon, double deepening) {
-  const PlanBody pa = Plan(a), pb = Plan(b);
-  if (pa.hull.size() < 3 || pb.hull.size() < 3) return INFINITY;  // no outline in plan (a vertical sheet)
+PlanMotion PlanMotionOf(const BodyState& state) {
+  // the outline about the CG: the body posed at the origin
+  RigidState at_cg = state.rigid;
+  at_cg.position = Vec3::Zero();
+  PlanMotion b{PlanOutline(state.vertices, at_cg), state.rigid.position.head<2>(), state.rigid.velocity.head<2>(),
+               (state.rigid.Rotation() * state.rigid.omega).z()};
+  for (const Vec2& q : b.outline) b.radius = std::max(b.radius, q.norm());
+  return b;
+}
+
+double SoonestMeeting(const PlanMotion& pa, const PlanMotion& pb, double horizon, double deepening) {
+  if (pa.outline.size() < 3 || pb.outline.size() < 3) return INFINITY;  // no outline in plan (a vertical sheet)
   // each corner's clearance to hold: out of the other outline; a corner inside it now (the bodies
   // interlock where they crushed, and no node there carries load) may not go `deepening` deeper
   std::vector<double> floor = Clearances(pa, pb, 0.0);
@@ -92,7 +81,7 @@ double SoonestMeeting(const BodyState& a, const BodyState& b, double horizon, do
     const std::vector<double> clearance = Clearances(pa, pb, t);
     double safe = INFINITY;
     for (std::size_t i = 0; i < clearance.size(); ++i) {
-      const double margin = clearance[i] - floor[i], rate = i < pa.hull.size() ? rate_a : rate_b;
+      const double margin = clearance[i] - floor[i], rate = i < pa.outline.size() ? rate_a : rate_b;
       if (margin <= 0.0) return t;
       if (rate > 0.0) safe = std::min(safe, margin / rate);
     }

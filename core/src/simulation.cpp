@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "dymesh/core/separation.h"
 
 namespace dymesh {
 
@@ -54,35 +53,45 @@ bool Simulation::Advance() {
   NoteContact(step, dt);
   Record(&step);
   // stop at the duration, or once contact has been over for the separation window and no two bodies
-  // can meet again within the slap horizon (a car turning off a wall slaps it with its tail): asked
-  // again when they could first meet
+  // can meet again within the slap horizon (a car turning off a wall slaps it with its tail; spec §1:
+  // the collision is over once its forces have separated the bodies): asked again when they could
+  // first meet
   if (scenario_.stop_at_separation && last_contact_time_ >= 0.0 && time_ - last_contact_time_ >= kSeparationWindow &&
       time_ >= recheck_separation_) {
     const double remaining = scenario_.duration - time_;
-    const double soonest = SoonestMeeting(std::min(remaining, kSlapHorizon), remaining);
+    const std::vector<PlanMotion> plans = PlanMotions();
+    const double soonest = SoonestMeeting(plans, std::min(remaining, kSlapHorizon), remaining);
     separated_ = soonest == INFINITY;
     recheck_separation_ = time_ + soonest;
     // a later meeting before the duration is noted, not simulated (a secondary impact)
-    if (separated_ && remaining > kSlapHorizon) later_meeting_ = time_ + SoonestMeeting(remaining, remaining);
+    if (separated_ && remaining > kSlapHorizon) later_meeting_ = time_ + SoonestMeeting(plans, remaining, remaining);
   }
   finished_ = time_ >= scenario_.duration - 0.5 * dt || separated_;
   return !finished_;
 }
 
-double Simulation::SoonestMeeting(double touched_horizon, double remaining) const {
-  // bodies that hold their height, seen in plan (others: the separation window alone)
+std::vector<PlanMotion> Simulation::PlanMotions() const {
+  // every body seen in plan when all hold their height (else none: the separation window alone)
+  std::vector<PlanMotion> plans;
   for (const BodySpec& b : scenario_.bodies)
-    if (b.motion != MotionModel::kPlanar && b.motion != MotionModel::kFixed) return INFINITY;
+    if (!HoldsHeight(b.motion)) return plans;
+  for (int i = 0; i < engine_->body_count(); ++i) plans.push_back(PlanMotionOf(engine_->state(i)));
+  return plans;
+}
+
+double Simulation::SoonestMeeting(const std::vector<PlanMotion>& plans, double touched_horizon, double remaining) const {
   // every pair that can carry a load (two rigid bodies pass through each other), in free motion: a
-  // pair that has touched over `touched_horizon`, one yet to meet (the next car of a chain) to the end
+  // pair that has touched over `touched_horizon`, one yet to meet (the next car of a chain) to the end.
+  // A corner inside the other outline may go a pass's restore margin deeper (TOOFAR_MARGIN: an
+  // overlap the contact can leave between nodes without load)
   double soonest = INFINITY;
-  for (int a = 0; a < engine_->body_count(); ++a)
-    for (int b = a + 1; b < engine_->body_count(); ++b) {
-      if (engine_->model(a).rigid && engine_->model(b).rigid) continue;
-      const bool touched = std::any_of(pair_contacts_.begin(), pair_contacts_.end(),
-                                       [&](const PairContact& c) { return c.a == a && c.b == b; });
-      soonest = std::min(soonest, dymesh::SoonestMeeting(engine_->state(a), engine_->state(b),
-                                                          touched ? touched_horizon : remaining,
+  for (std::size_t a = 0; a < plans.size(); ++a)
+    for (std::size_t b = a + 1; b < plans.size(); ++b) {
+      if (engine_->model(static_cast<int>(a)).rigid && engine_->model(static_cast<int>(b)).rigid) continue;
+      const bool touched = std::any_of(pair_contacts_.begin(), pair_contacts_.end(), [&](const PairContact& c) {
+        return c.a == static_cast<int>(a) && c.b == static_cast<int>(b);
+      });
+      soonest = std::min(soonest, dymesh::SoonestMeeting(plans[a], plans[b], touched ? touched_horizon : remaining,
                                                           scenario_.contact.toofar_margin));
     }
   return soonest;

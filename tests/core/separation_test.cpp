@@ -26,14 +26,19 @@ BodyState Box(double length, double width, double x, double y, const Vec3& veloc
 // a wall 100 m long (x), 1 m thick, whose face toward -y is at y = face
 BodyState Wall(double face) { return Box(100.0, 1.0, 0.0, face + 0.5); }
 
+// the forecast for two bodies as they are now
+double Meeting(const BodyState& a, const BodyState& b, double horizon, double deepening) {
+  return SoonestMeeting(PlanMotionOf(a), PlanMotionOf(b), horizon, deepening);
+}
+
 TEST(SoonestMeeting, ATranslationClosesTheGapAtTheRelativeSpeed) {
   // 2 x 2 m squares 3 m apart, the second coming at 1 m/s: they meet at 3 s (one advancement step,
   // exact); within a shorter horizon, or moving apart or alongside, never
   const BodyState a = Box(2, 2, 0, 0), b = Box(2, 2, 5, 0, Vec3(-1, 0, 0));
-  EXPECT_NEAR(SoonestMeeting(a, b, 10.0, 0.1), 3.0, 1e-12);
-  EXPECT_EQ(SoonestMeeting(a, b, 2.9, 0.1), INFINITY);
-  EXPECT_EQ(SoonestMeeting(a, Box(2, 2, 5, 0, Vec3(1, 0, 0)), 10.0, 0.1), INFINITY);
-  EXPECT_EQ(SoonestMeeting(a, Box(2, 2, 0, 3, Vec3(5, 0, 0)), 10.0, 0.1), INFINITY);
+  EXPECT_NEAR(Meeting(a, b, 10.0, 0.1), 3.0, 1e-12);
+  EXPECT_EQ(Meeting(a, b, 2.9, 0.1), INFINITY);
+  EXPECT_EQ(Meeting(a, Box(2, 2, 5, 0, Vec3(1, 0, 0)), 10.0, 0.1), INFINITY);
+  EXPECT_EQ(Meeting(a, Box(2, 2, 0, 3, Vec3(5, 0, 0)), 10.0, 0.1), INFINITY);
 }
 
 TEST(SoonestMeeting, ARodTurningBesideAWallReachesItWhenItsHalfExtentDoes) {
@@ -46,22 +51,22 @@ TEST(SoonestMeeting, ARodTurningBesideAWallReachesItWhenItsHalfExtentDoes) {
     (0.5 * length * std::sin(mid) + 0.5 * width * std::cos(mid) < distance ? lo : hi) = mid;
   }
   const double meet = lo / rate;
-  const double forecast = SoonestMeeting(Box(length, width, 0, 0, Vec3::Zero(), rate), Wall(distance), 5.0, 0.1);
+  const double forecast = Meeting(Box(length, width, 0, 0, Vec3::Zero(), rate), Wall(distance), 5.0, 0.1);
   // conservative (never after the meeting, to round-off) and converged: the corner closes at 1.3 m/s
   // against the 2 m/s bound, so each pose takes a third of the margin left
   EXPECT_LE(forecast, meet + 1e-12);
   EXPECT_NEAR(forecast, meet, 1e-9);
   // the same turn the other way, and the rod listed second
-  EXPECT_NEAR(SoonestMeeting(Wall(distance), Box(length, width, 0, 0, Vec3::Zero(), -rate), 5.0, 0.1), meet, 1e-9);
-  EXPECT_EQ(SoonestMeeting(Box(length, width, 0, 0, Vec3::Zero(), rate), Wall(distance), 0.9 * meet, 0.1), INFINITY);
+  EXPECT_NEAR(Meeting(Wall(distance), Box(length, width, 0, 0, Vec3::Zero(), -rate), 5.0, 0.1), meet, 1e-9);
+  EXPECT_EQ(Meeting(Box(length, width, 0, 0, Vec3::Zero(), rate), Wall(distance), 0.9 * meet, 0.1), INFINITY);
 }
 
 TEST(SoonestMeeting, AnInterlockedCornerMayGoOnlyDeepeningDeeper) {
   // a 2 x 2 m square 0.1 m into the wall (as crushed bodies end, no node there carrying load): moving
   // out, never; moving in at 1 m/s, once 0.05 m deeper, at 0.05 s
   const double face = 0.9;
-  EXPECT_EQ(SoonestMeeting(Box(2, 2, 0, 0, Vec3(0, -1, 0)), Wall(face), 10.0, 0.05), INFINITY);
-  EXPECT_NEAR(SoonestMeeting(Box(2, 2, 0, 0, Vec3(0, 1, 0)), Wall(face), 10.0, 0.05), 0.05, 1e-12);
+  EXPECT_EQ(Meeting(Box(2, 2, 0, 0, Vec3(0, -1, 0)), Wall(face), 10.0, 0.05), INFINITY);
+  EXPECT_NEAR(Meeting(Box(2, 2, 0, 0, Vec3(0, 1, 0)), Wall(face), 10.0, 0.05), 0.05, 1e-12);
 }
 
 }  // namespace

@@ -27,12 +27,15 @@ namespace u = dymesh::units;
 
 constexpr double kSpeedMph = 30.0;
 
-// how a run is set up besides the impact: step, frame turned about the vertical, body order
+// how a run is set up besides the impact: step, frame turned about the vertical, body order, the
+// box's mesh, contact options
 struct Variant {
   const char* label;
   double step = 0.0005;      // [s]
   double frame_deg = 0.0;    // every pose and heading turned
   bool wall_first = false;
+  int refine = 1;            // the box's segments times this (2: each face in four)
+  const char* contact = "";  // the scenario's "contact" object, inside its braces
 };
 
 // a 180 x 66 x 30 in, 3000 lb box at 30 mph, `heading_deg` off the normal of a rigid wall (face at
@@ -41,17 +44,17 @@ std::string BoxIntoWall(double heading_deg, double restitution, double mu, bool 
   const double f = setup.frame_deg * u::kDegree;
   char box[700], wall[500], json[2000];
   std::snprintf(box, sizeof box, R"({"name": "box", "mesh": {"box": {"length": 180, "width": 66, "height": 30,
-      "segments": [18, 7, 3]}}, "weight": 3000, "restitution": %g, "friction": %g, "motion": "planar",
+      "segments": [%d, %d, %d]}}, "weight": 3000, "restitution": %g, "friction": %g, "motion": "planar",
       "stiffness": {"default": {"A": 300, "B": 100, "conversion_height": 30}},
       "initial": {"position": [%.9f, %.9f, -15], "heading": %.9f, "speed": %g,
       "place_at_contact": {"with": "wall", "gap": 0.5}}})",
-                restitution, mu, -200.0 * std::cos(f), -200.0 * std::sin(f), heading_deg + setup.frame_deg, kSpeedMph);
+                18 * setup.refine, 7 * setup.refine, 3 * setup.refine, restitution, mu, -200.0 * std::cos(f), -200.0 * std::sin(f), heading_deg + setup.frame_deg, kSpeedMph);
   std::snprintf(wall, sizeof wall, R"({"name": "wall", "mesh": {"box": {"length": 40, "width": 1000, "height": 60,
       "segments": [1, 10, 1]}}, "rigid": true, "motion": "fixed", "friction": %g,
       "initial": {"position": [%.9f, %.9f, -30], "heading": %.9f}})",
                 mu, 20.0 * std::cos(f), 20.0 * std::sin(f), setup.frame_deg);
   std::snprintf(json, sizeof json, R"({"units": "US", "time": {"step": %g, "duration": 1.5, "stop_at_separation": %s},
-      "bodies": [%s, %s]})", setup.step, stop ? "true" : "false", setup.wall_first ? wall : box,
+      "contact": {%s}, "bodies": [%s, %s]})", setup.step, stop ? "true" : "false", setup.contact, setup.wall_first ? wall : box,
                 setup.wall_first ? box : wall);
   return json;
 }
@@ -95,12 +98,17 @@ bool TouchedAgain(const std::vector<double>& contact_times) {
 // the box turns off the wall and slaps it with its tail within the slap horizon: the stopped run
 // goes on through the slap. Where the run without the stop touches nothing more, the two agree to
 // round-off of the output (the same steps; the free motion after the last contact changes neither
-// delta-V nor yaw rate); where it touches again later, beyond the horizon, the stopped run says so.
-// At either restitution, at dt/2, with the wall listed first and in a frame turned 30 deg
+// delta-V nor yaw rate); where it touches again later, beyond the horizon, the stopped run says so;
+// the ledger balances (2 %, the issue's bar). At either restitution, at dt/2, with the wall listed
+// first, in a frame turned 30 deg, with the box meshed 1:4, with the other searches and 3 passes
 TEST(StopAtSeparation, ATailSlapIsPartOfTheCollision) {
   int agreed = 0, runs = 0;
-  for (const Variant& setup : {Variant{"default"}, Variant{"dt/2", 0.00025}, Variant{"wall first", 0.0005, 0.0, true},
-                               Variant{"frame +30 deg", 0.0005, 30.0}})
+  for (const Variant& setup :
+       {Variant{"default"}, Variant{"dt/2", 0.00025}, Variant{"wall first", 0.0005, 0.0, true},
+        Variant{"frame +30 deg", 0.0005, 30.0}, Variant{"box mesh 1:4", 0.0005, 0.0, false, 2},
+        Variant{"local average normal", 0.0005, 0.0, false, 1, R"("search_direction": "local_average_normal")"},
+        Variant{"polygon normal", 0.0005, 0.0, false, 1, R"("search_direction": "poly_normal")"},
+        Variant{"3 passes", 0.0005, 0.0, false, 1, R"("passes_per_step": 3)"}})
     for (double heading : {45.0, 60.0})
       for (double e : {0.0, 0.3}) {
         const Outcome stopped = Simulate(BoxIntoWall(heading, e, 0.0, true, setup));
@@ -112,6 +120,7 @@ TEST(StopAtSeparation, ATailSlapIsPartOfTheCollision) {
                     full.delta_v, full.yaw_rate, full.contact_times.back());
         const std::string label = std::string(setup.label) + ", " + std::to_string(heading) + " deg, e " + std::to_string(e);
         EXPECT_EQ(stopped.assessment.status, RunStatus::kComplete) << label;
+        EXPECT_NEAR(stopped.summary.energy_balance_error, 0.0, 0.02) << label;
         EXPECT_TRUE(TouchedAgain(stopped.contact_times)) << label << ": the slap is not in the stopped run";
         ++runs;
         if (more) {
@@ -122,8 +131,9 @@ TEST(StopAtSeparation, ATailSlapIsPartOfTheCollision) {
         EXPECT_NEAR(stopped.delta_v, full.delta_v, 1e-9 * full.delta_v) << label;
         EXPECT_NEAR(stopped.yaw_rate, full.yaw_rate, 1e-9 * std::abs(full.yaw_rate) + 1e-9) << label;
       }
-  // the comparison ran: a later contact is the exception (two of the sixteen, at dt/2)
-  EXPECT_GE(agreed, runs - 2);
+  // the comparison ran: a later (marked) contact is the exception, four of the 32 runs (e 0: dt/2 at 45
+  // and 60 deg, the box meshed 1:4 at 45, 3 passes at 60)
+  EXPECT_GE(agreed, runs - 4);
 }
 
 // at 30 deg the tail meets the wall 0.3 s after the first contact ends, beyond the slap horizon: the
@@ -139,6 +149,8 @@ TEST(StopAtSeparation, ALaterSecondImpactIsMarked) {
   ASSERT_NE(later, full.contact_times.end()) << "no contact after the stop";
   std::printf("[measured] box at 30 deg: stopped at %.3f s (%.3f mph), touches again at %.3f s (%.3f mph)\n",
               stopped.end, stopped.delta_v, *later, full.delta_v);
+  // it matters: +26 % here; 5 % is beyond what a step or mesh change moves this box's delta-V (the
+  // slap rows above: 0.2-0.4 %)
   EXPECT_GT(full.delta_v - stopped.delta_v, 0.05 * stopped.delta_v);
 }
 

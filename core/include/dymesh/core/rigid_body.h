@@ -15,6 +15,10 @@ enum class MotionModel {
   kFixed,         ///< does not move (a barrier bolted to the ground)
 };
 
+/// Whether a body of this motion keeps its height (planar or fixed): vertical loads, and moments
+/// other than about the vertical, do not move it.
+inline bool HoldsHeight(MotionModel motion) { return motion == MotionModel::kPlanar || motion == MotionModel::kFixed; }
+
 /// Extra loads a host adds to a body: force in the earth frame, moment in the body frame.
 struct ExternalLoads {
   Vec3 force_earth{0, 0, 0};  ///< [N]

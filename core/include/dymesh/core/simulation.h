@@ -8,6 +8,7 @@
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/placement.h"
 #include "dymesh/core/run_start.h"
+#include "dymesh/core/separation.h"
 #include "dymesh/core/time_step_guide.h"
 
 /// A self-contained run: bodies, contact engine, rigid-body host and recorded time history.
@@ -116,7 +117,8 @@ class Simulation {
   bool Integrate(const StepResult& step, double dt);
   void AcceptHostStates(const std::vector<RigidState>& states);
   void NoteContact(const StepResult& step, double dt);
-  double SoonestMeeting(double touched_horizon, double remaining) const;
+  std::vector<PlanMotion> PlanMotions() const;
+  double SoonestMeeting(const std::vector<PlanMotion>& plans, double touched_horizon, double remaining) const;
 
   Scenario scenario_;
   std::unique_ptr<ContactEngine> engine_;
