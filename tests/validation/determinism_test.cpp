@@ -114,13 +114,15 @@ TEST(Determinism, BarrierAtAnyThreadCount) {
 }
 
 TEST(Determinism, CarToCarRealMeshesAtAnyThreadCount) {
-  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0xf428699700154114ull);
+  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0x04012d18d8a60eb3ull);
 }
 
 TEST(Determinism, HighPolygonCarToCarAtAnyThreadCount) {
   // about 137k and 72k triangles (two 1-to-4 subdivisions), the first 30 ms of the pulse (hash
-  // renewed in the 16th session: the node area counts only the part of a face in contact)
-  ExpectThreadCountIndependent(CarToCar(2, 0.03), 0x88997394b0b9155dull);
+  // renewed in the 16th session: the node area counts only the part of a face in contact; and on
+  // 2026-11-26 with the car-to-car one: nodes pressed on a deformable master keep to faces turned
+  // like the one they were pressed on)
+  ExpectThreadCountIndependent(CarToCar(2, 0.03), 0x798bf5e00b324e58ull);
 }
 
 }  // namespace

@@ -150,20 +150,21 @@ RearEnd RunRearEnd(const std::string& label, const std::string& json, int p406_s
 // The cars can have closed no more than the two sides crushed where their crushed surfaces meet: the
 // closure equals the two deepest crushes, which lie opposite each other on the line of centres; 10 %
 // of the closure covers nodes of the two meshes not exactly opposite (faces of 1-3 in at the
-// bumpers). The ledger balances within 2 % (the issue's bar). Held over dt/2, 4 passes, the
+// bumpers). The ledger balances within 2 % (the issue's bar). Held over dt/2, 3 and 4 passes, the
 // polygon-normal search, the p406's mesh 1:4, the body order and a frame turned 30 degrees. The
-// local-average-normal search closes 17 % more than it crushes (34.0 against 28.2 in), and 3 passes
-// 21 % (36.8 against 29.2 in), known limits in the README held over the bar here. Neither bar is
-// robust: nudging the default by 0.5 mph or 4 % of its step gives 4-16 % (before the node area
+// local-average-normal search closes 35 % more than it crushes (39.2 against 29.0 in), a known limit
+// in the README held over the bar here; 3 passes closed 21 % more (36.8 against 29.2 in) until nodes
+// pressed on a deformable master kept to faces turned like the one they were pressed on (2026-11-26).
+// The bar is not robust: nudging the default by 0.5 mph or 4 % of its step gives 4-16 % (before the node area
 // counted only the faces' part in contact: -8 to 22 %; that default gave -8 %). Until nodes pressed on a deformable master stopped unloading
 // when a gap opened in front of them while the bodies still closed, the default closed 47.8 in for
 // 18.8 + 9.9 in of crush: display-mesh nodes that lost their face sprang back onto the weak rebound
 // curve and sank into the other car.
-// The crush split: every variant gives the p406 (the finer mesh) 8-41 % more than its equal-pressure
+// The crush split: every variant gives the p406 (the finer mesh) 5-34 % more than its equal-pressure
 // share (a known limit in the README: where the stock car's coarse nodes miss the p406's faces, the
 // p406 takes their share too), printed here. The default, held to 15 % (about one node spacing of the
-// faceted bumpers) until the node area counted only the faces' part in contact, gives 21 %; the
-// same nudges gave 9-31 % before and 21-41 % now. Held over the bar, to be dropped when it is met
+// faceted bumpers) until the node area counted only the faces' part in contact, gives 19 % (21 % until
+// 2026-11-26); the same nudges gave 9-31 %, then 21-41 %. Held over the bar, to be dropped when it is met
 TEST(Inline, RealCarMeshesCloseOnlyAsFarAsTheyCrush) {
   const std::string two = R"("passes_per_step": 2)";
   auto run = [](const std::string& label, const std::string& json, int p406_subdivisions = 0) {
@@ -184,7 +185,7 @@ TEST(Inline, RealCarMeshesCloseOnlyAsFarAsTheyCrush) {
   for (const auto& [label, r] : runs) {
     const double crush = r.c_p406 + r.c_stock;
     EXPECT_GT(r.closure, 10.0) << label;  // a real crush [in]
-    if (label == "local average normal" || label == "3 passes") {
+    if (label == "local average normal") {
       EXPECT_GT(std::abs(r.closure - crush), 0.1 * r.closure) << label << ": now within the bar; drop the exception";
     } else {
       EXPECT_NEAR(r.closure, crush, 0.1 * r.closure) << label;

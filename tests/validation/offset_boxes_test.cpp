@@ -35,7 +35,12 @@ Summary OffsetBoxes(int length_segments, SearchDirection search = SearchDirectio
 }
 
 // The mesh-convergence bar (2 %) on each box's delta-V and crush energy, and the ledger's
-// balance (2 %). The deepest crush within 5 %: it is one node's, on a 3 in grid across the front.
+// balance (2 %). The deepest crush within 5 %: it is one node's, on a 3 in grid across the front;
+// its peak (DeltaMaxTotal), which the meshes resolve. The permanent crush is printed, not held: the
+// deepest node's peak less the spring it got back, all of e delta_max (spec §6) if it kept a face as
+// the boxes parted, less if it lost it first, which one node's contact decides (at this start the
+// fine boxes' deepest node springs its whole 10 %, 11.91 of 13.24 in, while 0.02 in to either side
+// it keeps 13.3-13.6; the strip's springs 7-10 %)
 // Held at these default options only: across other options the two meshings differ by 0.2-6 % in
 // delta-V (README, Known limits).
 // (When each corner node of the fronts took a third of its neighbouring 270 in^2 side triangles as
@@ -46,13 +51,14 @@ TEST(OffsetBoxes, LongSidePanelsCrushLikeFinelyMeshedOnes) {
   for (int k = 0; k < 2; ++k) {
     const BodySummary &s = strip.bodies[k], &f = fine.bodies[k];
     std::printf("[measured] offset boxes, %s: delta-V %.3f / %.3f mph, crush energy %.0f / %.0f J, deepest crush "
-                "%.2f / %.2f in, yaw rate after %.1f / %.1f deg/s (side panels as one strip / 60 along)\n",
+                "%.2f / %.2f in at its peak, %.2f / %.2f in permanent, yaw rate after %.1f / %.1f deg/s (side panels "
+                "as one strip / 60 along)\n",
                 s.name.c_str(), s.delta_v / u::kMph, f.delta_v / u::kMph, s.crush_energy, f.crush_energy,
-                s.max_crush / u::kInch, f.max_crush / u::kInch, s.final_yaw_rate / u::kDegree,
-                f.final_yaw_rate / u::kDegree);
+                s.max_dynamic_crush / u::kInch, f.max_dynamic_crush / u::kInch, s.max_crush / u::kInch,
+                f.max_crush / u::kInch, s.final_yaw_rate / u::kDegree, f.final_yaw_rate / u::kDegree);
     EXPECT_NEAR(s.delta_v, f.delta_v, 0.02 * f.delta_v) << s.name;
     EXPECT_NEAR(s.crush_energy, f.crush_energy, 0.02 * f.crush_energy) << s.name;
-    EXPECT_NEAR(s.max_crush, f.max_crush, 0.05 * f.max_crush) << s.name;
+    EXPECT_NEAR(s.max_dynamic_crush, f.max_dynamic_crush, 0.05 * f.max_dynamic_crush) << s.name;
   }
   std::printf("[measured] offset boxes: node law / contact work %.3f (strip), %.3f (fine)\n",
               strip.law_energy / strip.crush_energy, fine.law_energy / fine.crush_energy);

@@ -147,7 +147,7 @@ class ContactEngine {
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
                   Located* out) const;
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
-                       const Vec3& inward, const Vec3& previous, const Vec3& parting, bool poly_normal,
+                       const Vec3& facing, const Vec3& previous, const Vec3& parting, bool poly_normal,
                        const Located* best, Located* out) const;
   // distance from slave node v to the master's nearest surface within `radius`, else infinity
   double DistanceToMaster(const PassFrame& f, int v, double radius, std::vector<Candidate>* scratch) const;
