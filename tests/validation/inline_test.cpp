@@ -161,8 +161,8 @@ RearEnd RunRearEnd(const std::string& label, const std::string& json, int p406_s
 // 18.8 + 9.9 in of crush: display-mesh nodes that lost their face sprang back onto the weak rebound
 // curve and sank into the other car.
 // The crush split: every variant gives the p406 (the finer mesh) 5-34 % more than its equal-pressure
-// share (a known limit in the README: where the stock car's coarse nodes miss the p406's faces, the
-// p406 takes their share too), printed here. The default, held to 15 % (about one node spacing of the
+// share (a known limit in the README: where the stock car's coarse nodes miss the p406's faces, their
+// share is left as overlap, not crushed into the stock car's mesh), printed here. The default, held to 15 % (about one node spacing of the
 // faceted bumpers) until the node area counted only the faces' part in contact, gives 19 % (21 % until
 // 2026-11-26); the same nudges gave 9-31 %, then 21-41 %. Held over the bar, to be dropped when it is met
 TEST(Inline, RealCarMeshesCloseOnlyAsFarAsTheyCrush) {
