@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-
 namespace dymesh {
 
 Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
@@ -60,11 +59,11 @@ bool Simulation::Advance() {
       time_ >= recheck_separation_) {
     const double remaining = scenario_.duration - time_;
     const std::vector<PlanMotion> plans = PlanMotions();
-    const double soonest = SoonestMeeting(plans, std::min(remaining, kSlapHorizon), remaining);
+    const double soonest = SoonestPairMeeting(plans, std::min(remaining, kSlapHorizon), remaining);
     separated_ = soonest == INFINITY;
     recheck_separation_ = time_ + soonest;
     // a later meeting before the duration is noted, not simulated (a secondary impact)
-    if (separated_ && remaining > kSlapHorizon) later_meeting_ = time_ + SoonestMeeting(plans, remaining, remaining);
+    if (separated_ && remaining > kSlapHorizon) later_meeting_ = time_ + SoonestPairMeeting(plans, remaining, remaining);
   }
   finished_ = time_ >= scenario_.duration - 0.5 * dt || separated_;
   return !finished_;
@@ -79,7 +78,7 @@ std::vector<PlanMotion> Simulation::PlanMotions() const {
   return plans;
 }
 
-double Simulation::SoonestMeeting(const std::vector<PlanMotion>& plans, double touched_horizon, double remaining) const {
+double Simulation::SoonestPairMeeting(const std::vector<PlanMotion>& plans, double touched_horizon, double remaining) const {
   // every pair that can carry a load (two rigid bodies pass through each other), in free motion: a
   // pair that has touched over `touched_horizon`, one yet to meet (the next car of a chain) to the end.
   // A corner inside the other outline may go a pass's restore margin deeper (TOOFAR_MARGIN: an

@@ -118,7 +118,7 @@ class Simulation {
   void AcceptHostStates(const std::vector<RigidState>& states);
   void NoteContact(const StepResult& step, double dt);
   std::vector<PlanMotion> PlanMotions() const;
-  double SoonestMeeting(const std::vector<PlanMotion>& plans, double touched_horizon, double remaining) const;
+  double SoonestPairMeeting(const std::vector<PlanMotion>& plans, double touched_horizon, double remaining) const;
 
   Scenario scenario_;
   std::unique_ptr<ContactEngine> engine_;
