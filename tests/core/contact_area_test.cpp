@@ -1,13 +1,10 @@
 // The contact area A_v of spec §3 (ContactNodeArea) against closed forms: a third of each face wholly
-// in contact, projected on the contact plane, and only the part of a face that reaches the master,
-// within a rigid master's sharp edges (SharpEdgesOf, EdgesRoundContact).
+// in contact, projected on the contact plane, and only the part of a face that reaches the master.
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <vector>
 
 #include "dymesh/core/contact_area.h"
-#include "dymesh/core/mesh.h"
 
 namespace dymesh {
 namespace {
@@ -90,45 +87,6 @@ TEST(ContactNodeArea, ARigidMastersSharpEdgesBoundItAndTheNodeCarriesWhatItsNeig
   EXPECT_NEAR(whole, 2.0 / 3.0, 1e-12);
   const std::vector<MasterEdge> wide = {{Vec3(2, 0, 0), Vec3(-1, 0, 0)}, {Vec3(-2, 0, 0), Vec3(1, 0, 0)}};
   EXPECT_EQ(ContactNodeArea(model, s, 0, normal, 0.001, wide), whole);
-}
-
-TEST(SharpEdges, ABoxHasItsTwelveEdgesAndARoundPoleOnlyItsRims) {
-  // a 6 x 6 x 10 box cut into unit squares: its 12 edges, 4 x 10 + 8 x 6 unit segments, each seen
-  // from its two faces; the flat faces' own edges are not sharp
-  const TriMesh box = MakeBox(6, 6, 10, 6, 6, 10);
-  const std::vector<SharpEdge> edges = SharpEdgesOf(box, BuildVertexTriangles(box));
-  EXPECT_EQ(edges.size(), 2u * (4 * 10 + 8 * 6));
-  auto on_box_edge = [](const Vec3& p) {
-    return (std::abs(std::abs(p.x()) - 3) < 1e-12) + (std::abs(std::abs(p.y()) - 3) < 1e-12) +
-               (std::abs(std::abs(p.z()) - 5) < 1e-12) >= 2;
-  };
-  for (const SharpEdge& e : edges) {
-    EXPECT_TRUE(on_box_edge(e.a) && on_box_edge(e.b));
-    EXPECT_NEAR(e.into.dot(e.normal), 0.0, 1e-12);  // in the face's plane
-  }
-  // a 32-facet round pole turns 11.25 deg from facet to facet: only its rims (90 deg) are sharp,
-  // 32 segments each, seen from the side and from the cap
-  const TriMesh pole = MakeCylinder(6, 120, 32);
-  const std::vector<SharpEdge> rims = SharpEdgesOf(pole, BuildVertexTriangles(pole));
-  EXPECT_EQ(rims.size(), 2u * 2 * 32);
-  for (const SharpEdge& e : rims) EXPECT_NEAR(std::abs(e.a.z()), 60.0, 1e-9);
-}
-
-TEST(SharpEdges, AContactOnAPostsFrontIsBoundedByItsTwoSides) {
-  // a 6 in post 100 in tall, pressed at its front's centre (outward normal -x) with a 5 in reach: its
-  // two vertical edges, each one line however many segments, facing the centre; the rims are 50 in away
-  const TriMesh post = MakeBox(6, 6, 100, 6, 6, 100);
-  const std::vector<SharpEdge> sharp = SharpEdgesOf(post, BuildVertexTriangles(post));
-  std::vector<MasterEdge> edges;
-  EdgesRoundContact(sharp, Vec3(-3, 0, 0), Vec3(-1, 0, 0), 5.0, &edges);
-  ASSERT_EQ(edges.size(), 2u);
-  for (const MasterEdge& e : edges) {
-    EXPECT_NEAR(std::abs(e.point.y()), 3.0, 1e-12);
-    EXPECT_NEAR(e.inward.dot(Vec3(0, -e.point.y() / 3.0, 0)), 1.0, 1e-12);  // toward the front's centre
-  }
-  // out of reach of both (a 2 in reach at the centre): none
-  EdgesRoundContact(sharp, Vec3(-3, 0, 0), Vec3(-1, 0, 0), 2.0, &edges);
-  EXPECT_TRUE(edges.empty());
 }
 
 }  // namespace
