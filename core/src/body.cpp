@@ -8,6 +8,9 @@ namespace dymesh {
 
 namespace {
 
+// which corner (0, 1, 2) of triangle `tri` vertex v is
+int CornerOf(const std::array<int, 3>& tri, int v) { return tri[0] == v ? 0 : tri[1] == v ? 1 : 2; }
+
 // rest angle of triangle t at its corner v over its rest area [rad/m^2] (0 for a degenerate one)
 double RestAnglePerArea(const BodyModel& model, int t, int v) {
   const auto& tri = model.mesh.triangles[t];
@@ -109,6 +112,61 @@ Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& s, int v) {
   // rest area it keeps. Computed per call from the rest mesh (only this search method asks; kept, it
   // would cost 24 bytes per triangle)
   return MeanNormal(model, s, v, [&](int t) { return RestAnglePerArea(model, t, v); });
+}
+
+namespace {
+
+// Integral of corner 0's barycentric weight over the part of a triangle where the linear field psi
+// (psi0..psi2 at its corners) is positive, as a fraction of the triangle's area (1/3 when all of it is)
+double InsideShareOfCorner0(double psi0, double psi1, double psi2) {
+  // wholly inside or wholly outside (most faces): the clip below gives exactly these
+  if (psi0 >= 0.0 && psi1 >= 0.0 && psi2 >= 0.0) return 1.0 / 3.0;
+  if (psi0 < 0.0 && psi1 < 0.0 && psi2 < 0.0) return 0.0;
+  // clip the reference triangle (0,0) (1,0) (0,1) to psi >= 0 (Sutherland-Hodgman, one half-plane)
+  const double x[3] = {0.0, 1.0, 0.0}, y[3] = {0.0, 0.0, 1.0}, psi[3] = {psi0, psi1, psi2};
+  double px[4], py[4];
+  int n = 0;
+  auto keep = [&](double kx, double ky) { px[n] = kx, py[n] = ky, ++n; };
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (psi[i] >= 0.0) keep(x[i], y[i]);
+    if ((psi[i] >= 0.0) != (psi[j] >= 0.0)) {
+      const double s = psi[i] / (psi[i] - psi[j]);
+      keep(x[i] + s * (x[j] - x[i]), y[i] + s * (y[j] - y[i]));
+    }
+  }
+  // integrate lambda0 = 1 - x - y over the clipped polygon (a fan of triangles: area x mean lambda0),
+  // over the area 1/2
+  double integral = 0.0;
+  for (int i = 1; i + 1 < n; ++i) {
+    const double ax = px[i] - px[0], ay = py[i] - py[0], bx = px[i + 1] - px[0], by = py[i + 1] - py[0];
+    const double area = 0.5 * std::abs(ax * by - bx * ay);
+    integral += area * (3.0 - (px[0] + px[i] + px[i + 1]) - (py[0] + py[i] + py[i + 1])) / 3.0;
+  }
+  return integral / 0.5;
+}
+
+}  // namespace
+
+double ContactNodeArea(const BodyModel& model, const BodyState& s, int v, const Vec3& normal, double depth) {
+  // how deep each rest (uncrushed) corner lies below the master's tangent plane at the contact: the
+  // plane lies `depth` beyond v's current position along the master's outward normal
+  auto rest_depth = [&](int u) { return depth + (s.vertices[v] - model.mesh.vertices[u]).dot(normal); };
+  const auto& adj = model.vertex_triangles;
+  double area = 0.0;
+  for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
+    const int t = adj.ids[k];
+    // only faces turned toward the master (outward normal against its outward normal) carry pressure
+    const double facing = -s.tri_normal[t].dot(normal);
+    if (facing <= 0.0) continue;
+    // v's share of the face where its rest shape overlaps the master (a third of a face wholly inside)
+    const auto& tri = model.mesh.triangles[t];
+    const int at = CornerOf(tri, v);
+    const double share = InsideShareOfCorner0(rest_depth(tri[at]), rest_depth(tri[(at + 1) % 3]),
+                                              rest_depth(tri[(at + 2) % 3]));
+    area += s.tri_area[t] * facing * share;
+  }
+  return area;
 }
 
 }  // namespace dymesh

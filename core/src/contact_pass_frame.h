@@ -28,7 +28,6 @@ struct ContactEngine::PassFrame {
   const BodyState* master;
   BodyState* slave;
   const Locator* master_locator;
-  const std::vector<SharpEdge>* master_sharp_edges;  // a rigid master's (else empty)
   Mat3 r_master, r_slave;   // body -> earth
   Mat3 r_slave_to_master;   // slave body -> master body
   Vec3 t_slave_to_master;   // slave CG in the master frame

@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "contact_pass_frame.h"
-#include "dymesh/core/contact_area.h"
 #include "dymesh/core/geometry.h"
 #include "dymesh/core/node_force.h"
 #include "dymesh/core/parallel.h"

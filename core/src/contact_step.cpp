@@ -9,7 +9,6 @@
 #include "contact_pass_frame.h"
 #include "dymesh/core/contact_stick.h"
 #include "dymesh/core/crush_sharing.h"
-#include "dymesh/core/geometry.h"
 #include "dymesh/core/parallel.h"
 
 namespace dymesh {
@@ -79,9 +78,6 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
     states_.push_back(MakeBodyState(*models_[i], initial[i]));
     motions_.push_back(MotionModel::kFree6Dof);
     locators_.push_back(make_locator(models_[i]->mesh));
-    // a rigid body's sharp edges bound the contact area of the nodes pressed on it (spec §3 A_v)
-    sharp_edges_.push_back(models_[i]->rigid ? SharpEdgesOf(models_[i]->mesh, models_[i]->vertex_triangles)
-                                             : std::vector<SharpEdge>{});
   }
   bounds_min_.resize(n);
   bounds_max_.resize(n);
@@ -308,8 +304,6 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   }
   if (found) ++out->diag.located;
   if (!found && engagement == Engagement::kNone) return;
-  out->edges.clear();
-  if (found && f.master_model->rigid) SharpEdgesRound(f, v, hit, &out->edges);
   // whether the bodies still close on a node that found no face: along its last contact normal, or,
   // holding a spring, along its crush (the line the master pressed it along). spec §6: a held node
   // keeps its spring only while the master still comes at it; once it moves away from the master
@@ -329,8 +323,8 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
     free_gap = DistanceToMaster(f, v, f.slave_model->restitution * f.slave->delta_max[v], &out->scratch);
   Vec3 delta;
   bool holding = false;
-  const double node_force = RestoreNode(f, v, found ? &hit : nullptr, out->edges, closing_unfound, free_gap, dt,
-                                        &out->diag, &out->sums.law_energy, &delta, &holding);
+  const double node_force = RestoreNode(f, v, found ? &hit : nullptr, closing_unfound, free_gap, dt, &out->diag,
+                                        &out->sums.law_energy, &delta, &holding);
   if (delta != f.slave->delta[v]) {
     // the new crush waits in pending_delta_ until committed (with the sibling pass, or at once)
     (*f.pending)[v] = delta;
@@ -367,7 +361,7 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
 
 ContactEngine::PassFrame ContactEngine::FrameOf(int master, int slave) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
-              locators_[master].get(), &sharp_edges_[master], states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
+              locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
               Mat3::Identity(), Vec3::Zero(), &pending_delta_[slave],
               0.5 * (models_[master]->friction + models_[slave]->friction), false,
               pushed_[static_cast<size_t>(slave) * body_count() + master].normalized()};
@@ -650,37 +644,8 @@ double ContactEngine::DistanceToMaster(const PassFrame& f, int v, double radius,
   return nearest <= radius ? nearest : INFINITY;
 }
 
-void ContactEngine::SharpEdgesRound(const PassFrame& f, int v, const Located& hit,
-                                    std::vector<MasterEdge>* edges) const {
-  // spec §3 A_v: where v's rest faces, seen along the contact normal, stay on the face it is pressed
-  // on, that face's plane is the master's surface under them all; else the master's sharp edges
-  // within their reach bound it (a post's corners; a round pole's facets are smooth)
-  edges->clear();
-  const auto& sharp = *f.master_sharp_edges;
-  if (sharp.empty()) return;
-  const auto& pressed = f.master_model->mesh.triangles[hit.triangle];
-  const Vec3& a = f.master->vertices[pressed[0]];
-  const Vec3& b = f.master->vertices[pressed[1]];
-  const Vec3& c = f.master->vertices[pressed[2]];
-  const Vec3 contact = f.ToMaster(f.slave->vertices[v]) + hit.depth * hit.normal;
-  const auto& adj = f.slave_model->vertex_triangles;
-  bool beyond = false;
-  double reach = 0.0;
-  for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k)
-    for (int u : f.slave_model->mesh.triangles[adj.ids[k]]) {
-      const Vec3 rest = f.ToMaster(f.slave_model->mesh.vertices[u]);
-      beyond = beyond || !InsideTriangleCrossProduct(rest, a, b, c, hit.normal);
-      reach = std::max(reach, AlongSurface(rest - contact, hit.normal).norm());  // seen along the normal
-    }
-  if (!beyond) return;
-  EdgesRoundContact(sharp, contact, hit.normal, reach, edges);
-  // in the slave's frame
-  const Mat3 to_slave = f.r_slave_to_master.transpose();
-  for (MasterEdge& e : *edges) e = {to_slave * (e.point - f.t_slave_to_master), to_slave * e.inward};
-}
-
-double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, const std::vector<MasterEdge>& edges,
-                                  bool closing_unfound, double free_gap, double dt,
+double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound,
+                                  double free_gap, double dt,
                                   ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding) {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
@@ -799,7 +764,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   const double peak = s.delta_max[v];
   s.delta_max[v] = std::max(s.delta_max[v], new_deflection);
   if (!held) s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
-  const double area = touching ? ContactNodeArea(m, s, v, normal_slave, hit->depth, edges) : s.node_area[v];
+  const double area = touching ? ContactNodeArea(m, s, v, normal_slave, hit->depth) : s.node_area[v];
   const double force =
       touching ? area * NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_) : 0.0;
 

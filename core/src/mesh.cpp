@@ -197,16 +197,6 @@ VertexTriangles BuildVertexTriangles(const TriMesh& mesh) {
   return adj;
 }
 
-int TriangleAcross(const TriMesh& mesh, const VertexTriangles& adjacency, int t, int a, int b) {
-  // a's triangles (ascending) that also have b
-  for (int k = adjacency.offsets[a]; k < adjacency.offsets[a + 1]; ++k) {
-    const int other = adjacency.ids[k];
-    const auto& tri = mesh.triangles[other];
-    if (other != t && (tri[0] == b || tri[1] == b || tri[2] == b)) return other;
-  }
-  return -1;
-}
-
 TriMesh Subdivide(const TriMesh& mesh) {
   TriMesh out;
   out.vertices = mesh.vertices;

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "dymesh/core/contact_area.h"
+#include "dymesh/core/body.h"
 
 namespace dymesh {
 namespace {
@@ -57,36 +57,6 @@ TEST(ContactNodeArea, CrushCountsFromTheRestShape) {
   const double facing = -s.tri_normal[0].dot(normal);
   const double expected = s.tri_area[0] * facing * (1.0 - 0.125) / 3.0;
   EXPECT_NEAR(ContactNodeArea(model, s, 0, normal, 0.0), expected, 1e-9);
-}
-
-// a node at the origin of the z = 0 plane with four neighbours at (+-L, 0) and (0, +-L): four faces,
-// outward normal +z
-BodyState Diamond(double leg, BodyModel* model) {
-  TriMesh mesh;
-  mesh.vertices = {Vec3(0, 0, 0), Vec3(leg, 0, 0), Vec3(0, leg, 0), Vec3(-leg, 0, 0), Vec3(0, -leg, 0)};
-  mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
-  *model = MakeBodyModel("diamond", mesh, {}, 1.0, Mat3::Identity(), 0.0, 0.0, false);
-  return MakeBodyState(*model, RigidState{});
-}
-
-TEST(ContactNodeArea, ARigidMastersSharpEdgesBoundItAndTheNodeCarriesWhatItsNeighboursBeyondThemCannot) {
-  // a post |x| <= w (its sharp edges x = +-w) pressing the diamond's node 0 (all of it below the
-  // tangent plane). On the face O(0,0) A(L,0) B(0,L), A beyond the edge and B on the post, node 0 carries
-  // its own weight 1 - x/L - y/L and half of A's x/L over x <= w: int_0^w int_0^(L-x) (1 - x/(2L) - y/L)
-  // dy dx = int_0^w (L - x)/2 dx = (L w - w^2/2)/2; four such faces: 2 L w - w^2
-  BodyModel model;
-  const BodyState s = Diamond(1.0, &model);
-  const Vec3 normal(0, 0, -1);
-  const double w = 0.25;
-  const std::vector<MasterEdge> post = {{Vec3(w, 0, 0), Vec3(-1, 0, 0)}, {Vec3(-w, 0, 0), Vec3(1, 0, 0)}};
-  EXPECT_NEAR(ContactNodeArea(model, s, 0, normal, 0.001, post), 2.0 * w - w * w, 1e-12);
-  // one edge: the two faces on the other side count their thirds, L^2/6 each
-  EXPECT_NEAR(ContactNodeArea(model, s, 0, normal, 0.001, {post[0]}), 1.0 / 3.0 + (w - w * w / 2.0), 1e-12);
-  // without edges, or with edges beyond the faces: the thirds of the whole, 4 (L^2/2)/3, to the bit
-  const double whole = ContactNodeArea(model, s, 0, normal, 0.001);
-  EXPECT_NEAR(whole, 2.0 / 3.0, 1e-12);
-  const std::vector<MasterEdge> wide = {{Vec3(2, 0, 0), Vec3(-1, 0, 0)}, {Vec3(-2, 0, 0), Vec3(1, 0, 0)}};
-  EXPECT_EQ(ContactNodeArea(model, s, 0, normal, 0.001, wide), whole);
 }
 
 }  // namespace

@@ -122,29 +122,5 @@ TEST(CoarseFace, PostOffTheAxisBetweenTheNodesStopsThePointItMeets) {
   }
 }
 
-// A node of the box on the post: the box's front meshed finer, so that a node lands on the post's
-// axis with its neighbours beside the post (33, 16.5 and 4.1 in away; 1:4 and 1:16 subdivisions of
-// the one-quad front, and a 16 x 5 grid). The same known answer, C = 17.25 in: the post's face presses
-// the box over its own width only (spec §3 A_v bounded by the post's sharp edges), and the node on it
-// carries what the post presses of its neighbours' faces, as they meet nothing. Before, the node
-// pressed with its whole faces' width: 6.38 in at 1:4 (33 in wide), 9.82 in at 1:16; on the grid the
-// neighbours' shares of the post's width went unpressed: 21.78 in
-TEST(CoarseFace, ANodeOnThePostPressesOnlyThePostsWidth) {
-  const std::vector<std::pair<std::string, std::function<void(Scenario*)>>> meshes = {
-      {"box mesh 1:4", [](Scenario* s) { s->bodies[0].mesh.subdivisions += 1; }},
-      {"box mesh 1:16", [](Scenario* s) { s->bodies[0].mesh.subdivisions += 2; }},
-      {"box grid 16 x 5", [](Scenario* s) { s->bodies[0].mesh.box_segments = {1, 16, 5}; }},
-  };
-  std::vector<testing::ScenarioVariant> variants = testing::ContactVariants();
-  variants.insert(variants.begin(), {"default", [](Scenario*) {}});
-  variants.push_back({"post first", [](Scenario* s) { std::swap(s->bodies[0], s->bodies[1]); }});
-  for (const auto& [mesh, refine] : meshes)
-    for (const auto& [label, vary] : variants)
-      ExpectPostStopsBox(mesh + ", " + label, [&](Scenario* s) {
-        refine(s);
-        vary(s);
-      });
-}
-
 }  // namespace
 }  // namespace dymesh

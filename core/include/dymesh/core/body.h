@@ -79,4 +79,12 @@ Vec3 AreaWeightedNormal(const BodyModel& model, const BodyState& state, int v);
 /// node on an edge looks halfway between its faces however they are meshed.
 Vec3 LocalAverageNormal(const BodyModel& model, const BodyState& state, int v);
 
+/// Contact area A_v of spec §3 for slave vertex v pressed against a master whose outward normal at
+/// the contact is `normal` (body frame), v lying `depth` inside it: v's share (a third of a face wholly
+/// in contact) of each surrounding face turned toward the master, projected on the contact plane, and
+/// only over the part of the face whose rest shape overlaps the master's tangent plane there. A face
+/// reaching far out of the contact (a long side panel behind a crushed corner) counts only where it
+/// meets the master, so the area converges as the mesh is refined.
+double ContactNodeArea(const BodyModel& model, const BodyState& state, int v, const Vec3& normal, double depth);
+
 }  // namespace dymesh

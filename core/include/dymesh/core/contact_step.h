@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "dymesh/core/body.h"
-#include "dymesh/core/contact_area.h"
 #include "dymesh/core/locator.h"
 #include "dymesh/core/options.h"
 #include "dymesh/core/rigid_body.h"
@@ -115,7 +114,6 @@ class ContactEngine {
     ContactDiagnostics diag;
     std::vector<int> touching, holding, moved;  // ascending node indices
     std::vector<Candidate> scratch;             // candidate triangles of one node
-    std::vector<MasterEdge> edges;              // a rigid master's sharp edges round one node's contact
     void Clear() {
       sums = PassSums{};
       diag = ContactDiagnostics{};
@@ -153,18 +151,13 @@ class ContactEngine {
                        const Located* best, Located* out) const;
   // distance from slave node v to the master's nearest surface within `radius`, else infinity
   double DistanceToMaster(const PassFrame& f, int v, double radius, std::vector<Candidate>* scratch) const;
-  // a rigid master's sharp edges round the contact that `hit` found for slave node v (slave frame),
-  // when v's rest faces reach past the face it is pressed on; else none (spec §3 A_v)
-  void SharpEdgesRound(const PassFrame& f, int v, const Located& hit, std::vector<MasterEdge>* edges) const;
   // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
   // step_start_deflection; the new Delta goes to *new_delta (committed later). Without a hit:
   // `closing_unfound`, the bodies still close on the node (along its last contact normal, or its crush
   // while it holds a spring), and `free_gap`, how far the node may spring back (the distance to a
-  // rigid master's surface); `edges`, a rigid master's sharp edges round the contact (SharpEdgesRound).
-  // *holding: the node was held with a spring still stored (spec §6)
-  double RestoreNode(const PassFrame& f, int v, const Located* hit, const std::vector<MasterEdge>& edges,
-                     bool closing_unfound, double free_gap, double dt, ContactDiagnostics* diag, double* law_energy,
-                     Vec3* new_delta, bool* holding);
+  // rigid master's surface). *holding: the node was held with a spring still stored (spec §6)
+  double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
+                     ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding);
   void CommitPending(int body);
   // spec §1 swapping against a rigid body: its nodes, as slaves, push the deformable body's faces they
   // crossed between the nodes that `engaged` holds on it (a pole meeting a coarse panel between its
@@ -180,7 +173,6 @@ class ContactEngine {
   std::vector<BodyState> states_;
   std::vector<MotionModel> motions_;  // how the host moves each body
   std::vector<std::unique_ptr<Locator>> locators_;
-  std::vector<std::vector<SharpEdge>> sharp_edges_;  // per body: a rigid one's sharp edges (SharpEdgesOf)
   std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame box holding every vertex so far, per body
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
   std::vector<std::array<EngagedNodes, 2>> engaged_;  // per pair (a<b): nodes of a, of b engaged with the other

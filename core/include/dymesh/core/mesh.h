@@ -14,9 +14,6 @@ struct TriMesh {
   std::vector<std::array<int, 3>> triangles;  // vertex indices (n_triangles)
 };
 
-/// Which corner (0, 1, 2) of triangle `tri` vertex v is (2 when it is none of the first two).
-inline int CornerOf(const std::array<int, 3>& tri, int v) { return tri[0] == v ? 0 : tri[1] == v ? 1 : 2; }
-
 /// CSR vertex -> triangle adjacency: triangles of vertex v are ids[offsets[v] .. offsets[v+1]).
 struct VertexTriangles {
   std::vector<int> offsets;  // (n_vertices + 1)
@@ -38,10 +35,6 @@ TriMesh Weld(const TriMesh& mesh, double tolerance);
 
 /// Builds the CSR vertex -> triangle adjacency.
 VertexTriangles BuildVertexTriangles(const TriMesh& mesh);
-
-/// The triangle other than t that has the edge a-b (the first by index where the edge is shared by
-/// more), or -1 for an open edge.
-int TriangleAcross(const TriMesh& mesh, const VertexTriangles& adjacency, int t, int a, int b);
 
 /// 1-to-4 midpoint subdivision: same surface, four times the triangles, shared midpoints.
 TriMesh Subdivide(const TriMesh& mesh);
