@@ -84,12 +84,12 @@ double Simulation::SoonestPairMeeting(const std::vector<PlanMotion>& plans, doub
   // A corner inside the other outline may go a pass's restore margin deeper (TOOFAR_MARGIN: an
   // overlap the contact can leave between nodes without load)
   double soonest = INFINITY;
-  for (std::size_t a = 0; a < plans.size(); ++a)
-    for (std::size_t b = a + 1; b < plans.size(); ++b) {
-      if (engine_->model(static_cast<int>(a)).rigid && engine_->model(static_cast<int>(b)).rigid) continue;
-      const bool touched = std::any_of(pair_contacts_.begin(), pair_contacts_.end(), [&](const PairContact& c) {
-        return c.a == static_cast<int>(a) && c.b == static_cast<int>(b);
-      });
+  const int n = static_cast<int>(plans.size());
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      if (engine_->model(a).rigid && engine_->model(b).rigid) continue;
+      const bool touched = std::any_of(pair_contacts_.begin(), pair_contacts_.end(),
+                                       [&](const PairContact& c) { return c.a == a && c.b == b; });
       soonest = std::min(soonest, dymesh::SoonestMeeting(plans[a], plans[b], touched ? touched_horizon : remaining,
                                                           scenario_.contact.toofar_margin));
     }

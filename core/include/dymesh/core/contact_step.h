@@ -146,6 +146,9 @@ class ContactEngine {
   // `along`: a search direction (master frame) instead of the method's, or null
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
                   Located* out) const;
+  // master triangle `candidate` for the node at p (master frame): taken when the node lies behind it along
+  // ray_dir, its normal points along `facing` (the way the node faces) and not against `previous` (its last
+  // contact normal) or `parting` (the pair's impulse while the node withdraws), and it is nearer than `best`
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
                        const Vec3& facing, const Vec3& previous, const Vec3& parting, bool poly_normal,
                        const Located* best, Located* out) const;
