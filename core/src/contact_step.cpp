@@ -303,6 +303,9 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
     if (LocateNode(f, v, was_touching, &pressed_on, &out->scratch, &again) && again.depth < hit.depth) hit = again;
   }
   if (found) ++out->diag.located;
+  // a node that found the master closing on it, or lies behind its surface: its own contact takes
+  // the faces round it
+  if (found && (hit.rel_velocity.dot(hit.normal) < 0.0 || hit.depth > 0.0)) out->located.push_back(v);
   if (!found && engagement == Engagement::kNone) return;
   // whether the bodies still close on a node that found no face: along its last contact normal, or,
   // holding a spring, along its crush (the line the master pressed it along). spec §6: a held node
@@ -399,7 +402,7 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
   PassSums sums;
   sums.master = master;
   sums.slave = slave;
-  std::vector<int> now_touching, now_holding, moved;
+  std::vector<int> now_touching, now_holding, now_located, moved;
   for (std::size_t c = 0; c < ChunkCount(candidates.size()); ++c) {
     const ChunkSums& part = chunks_[c];
     sums.normal += part.sums.normal;
@@ -409,10 +412,12 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
     diag->Add(part.diag);
     now_touching.insert(now_touching.end(), part.touching.begin(), part.touching.end());
     now_holding.insert(now_holding.end(), part.holding.begin(), part.holding.end());
+    now_located.insert(now_located.end(), part.located.begin(), part.located.end());
     moved.insert(moved.end(), part.moved.begin(), part.moved.end());
   }
   engaged->touching = std::move(now_touching);
   engaged->holding = std::move(now_holding);
+  engaged->located = std::move(now_located);
   f.slave->law_energy += sums.law_energy;
 
   // crushed nodes change the slave's triangles, bounds and search structure (refit), now or after

@@ -3,6 +3,7 @@
 // tested against the rigid surface, and a post between them went straight through the face.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -27,9 +28,9 @@ namespace u = units;
 constexpr double kSpeedMph = 10.0, kPostWidth = 6.0, kBoxHeight = 30.0;
 constexpr double kA = 300.0, kB = 100.0;  // [lb/in], [lb/in^2] over the conversion height 30 in
 
-Scenario PostScenario(double offset_in) {
+Scenario PostScenario(double offset_in, const std::array<int, 3>& box_segments = {1, 1, 1}) {
   Scenario s = testing::UsScenario("(coarse face test)", 0.0005, 0.4);
-  BodySpec box = testing::BoxVehicle("box", 180, 66, kBoxHeight, {1, 1, 1}, 3000, kA, kB, kBoxHeight, 0.0);
+  BodySpec box = testing::BoxVehicle("box", 180, 66, kBoxHeight, box_segments, 3000, kA, kB, kBoxHeight, 0.0);
   box.initial.velocity = Vec3(kSpeedMph * u::kMph, 0, 0);
   BodySpec post;
   post.name = "post";
@@ -101,6 +102,56 @@ TEST(CoarseFace, PostBetweenTheNodesForEverySearchStopRulePassCountStepPostMeshO
   variants.push_back({"post mesh 1:4", [](Scenario* s) { s->bodies[1].mesh.subdivisions += 1; }});
   variants.push_back({"post first", [](Scenario* s) { std::swap(s->bodies[0], s->bodies[1]); }});
   for (const auto& [label, vary] : variants) ExpectPostStopsBox(label, vary);
+}
+
+// A node column on the post, or at its edge: the post's nodes push the faces between the column and
+// the next one beside the post, which the column's own contact held before (a face with a held corner
+// was left to it). With the column 0.001-0.5 in inside the post's edge (6 in columns, the 11 x 5
+// grid), it slid off the post's front as the box turned and the post went through the faces beside it:
+// delta-V 0.18 / 4.31 / 7.60 mph of 10. Known answers as above: the box stops (delta-V V within 3 %),
+// and the crush is the closed form's within 15 %: a node on a narrow face carries its node area,
+// which runs past the face's edges, while the post's nodes press the rest of the faces beside it
+// (README known limits: meshes with a node on the post spread so; the grid with 8.25 in spacing 14.5 %
+// under, not in this list). Energy balance 2 %
+TEST(CoarseFace, NodeColumnsOnOrBesideThePostStopTheBox) {
+  const struct {
+    std::array<int, 3> segments;
+    double offset_in;
+  } cases[] = {{{1, 11, 5}, 0.001}, {{1, 11, 5}, 0.1}, {{1, 11, 5}, 0.5}, {{1, 12, 5}, 0.0}, {{1, 12, 5}, 0.5},
+               {{1, 16, 5}, 0.0}};
+  const double v = kSpeedMph * u::kMph, c = ClosedFormCrush();
+  for (const auto& k : cases) {
+    const PostRun r = RunPost(PostScenario(k.offset_in, k.segments));
+    char label[64];
+    std::snprintf(label, sizeof label, "%d columns, post %g in off", k.segments[1], k.offset_in);
+    EXPECT_NEAR(r.delta_v, v, 0.03 * v) << label;
+    EXPECT_NEAR(r.crush, c, 0.15 * c) << label;
+    EXPECT_NEAR(r.balance, 0.0, 0.02) << label;
+    std::printf("[measured] post on a node column, %s: delta-V %.3f mph, crush %.2f in (closed form %.2f), balance "
+                "%.4f %%\n", label, r.delta_v / u::kMph, r.crush / u::kInch, c / u::kInch, 100 * r.balance);
+  }
+}
+
+// the same with the column 0.1 in inside the post's edge, across the searches, stop rules, pass counts,
+// dt/2, body order and a turned frame (the frame turns the post with the box: the same impact). The
+// local-average-normal search crushes 23 % past the closed form (21.2 in; README known limits): its
+// crush is held to the box stopping only
+TEST(CoarseFace, NodeColumnAtThePostsEdgeForEverySearchStopRulePassCountStepOrderAndFrame) {
+  std::vector<testing::ScenarioVariant> variants = testing::ContactVariants();
+  variants.push_back({"post first", [](Scenario* s) { std::swap(s->bodies[0], s->bodies[1]); }});
+  const double v = kSpeedMph * u::kMph, c = ClosedFormCrush();
+  for (const auto& [label, vary] : variants) {
+    Scenario s = PostScenario(0.1, {1, 11, 5});
+    vary(&s);
+    const PostRun r = RunPost(s);
+    EXPECT_NEAR(r.delta_v, v, 0.03 * v) << label;
+    if (label != "local average normal") {
+      EXPECT_NEAR(r.crush, c, 0.15 * c) << label;
+    }
+    EXPECT_NEAR(r.balance, 0.0, 0.02) << label;
+    std::printf("[measured] post 0.1 in inside a node column, %s: delta-V %.3f mph, crush %.2f in (closed form %.2f)\n",
+                label.c_str(), r.delta_v / u::kMph, r.crush / u::kInch, c / u::kInch);
+  }
 }
 
 // Off the axis (frictionless, e = 0), impulse-momentum as for the eccentric wall: the normal impulse P

@@ -128,13 +128,15 @@ Scenario BoxIntoOffsetPole(const std::string& search_direction) {
                        "box_into_offset_pole.json");
 }
 
-// Known limit (README): with the local-average-normal search the box's own nodes and the pole's nodes
-// push the same faces back and forth, and nodes end far outside the box (36 in; the max crush reads
-// 161 in where the velocity search gives 37.6). Such a run is marked crush_outside_outline; the
-// velocity search's run of the same impact is not (its nodes end within 1 in of the box's bounds, crush
-// bulging round the pole)
-TEST(RoundPole, NodesPushedOutOfTheBoxAreMarked) {
-  for (const std::string search : {"local_average_normal", "velocity"}) {
+// With the local-average-normal search the box's own nodes and the pole's nodes pushed the same faces
+// back and forth, and nodes ended far outside the box (the max crush read 161 in where the velocity
+// search gave 37.6). The pole's nodes now press only the faces none of whose corners the box's own
+// nodes meet the pole with (touching it, or finding it on their search line) over the half of the
+// face nearer those corners: both searches keep the box's nodes within its outline (not marked
+// crush_outside_outline), and their deepest crush agrees within 20 % (the same impact; measured 3 %)
+TEST(RoundPole, NodesStayInTheBoxForBothSearches) {
+  double velocity_crush = 0.0;
+  for (const std::string search : {"velocity", "local_average_normal"}) {
     const Scenario s = BoxIntoOffsetPole(search);
     auto device = std::make_shared<const accel::EmbreeDevice>();
     Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
@@ -144,7 +146,9 @@ TEST(RoundPole, NodesPushedOutOfTheBoxAreMarked) {
     for (const RunWarning& w : sum.warnings) marked = marked || (w.code == "crush_outside_outline" && w.field == "bodies[0]");
     std::printf("[measured] box into the pole 15 in off, %s search: max crush %.1f in, marked %d\n", search.c_str(),
                 sum.bodies[0].max_crush / u::kInch, marked ? 1 : 0);
-    EXPECT_EQ(marked, search != "velocity") << search;
+    EXPECT_FALSE(marked) << search;
+    if (search == "velocity") velocity_crush = sum.bodies[0].max_crush;
+    EXPECT_NEAR(sum.bodies[0].max_crush, velocity_crush, 0.20 * velocity_crush) << search;
   }
 }
 

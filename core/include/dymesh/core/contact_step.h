@@ -112,22 +112,25 @@ class ContactEngine {
   struct ChunkSums {
     PassSums sums;
     ContactDiagnostics diag;
-    std::vector<int> touching, holding, moved;  // ascending node indices
-    std::vector<Candidate> scratch;             // candidate triangles of one node
+    std::vector<int> touching, holding, located, moved;  // ascending node indices
+    std::vector<Candidate> scratch;                      // candidate triangles of one node
     void Clear() {
       sums = PassSums{};
       diag = ContactDiagnostics{};
       touching.clear();
       holding.clear();
+      located.clear();
       moved.clear();
     }
   };
   // how a slave node met the master at its last update: carrying force, or held with a spring the
   // master closed on (spec §6), or neither
   enum class Engagement : char { kNone, kTouching, kHolding };
-  // the slave nodes of one side of a pair that stay in the pass's candidates (both ascending)
+  // the slave nodes of one side of a pair that stay in the pass's candidates (both ascending), and
+  // those that met the master at their last update (ascending: a rigid master's nodes leave the
+  // faces round them to their own contact)
   struct EngagedNodes {
-    std::vector<int> touching, holding;
+    std::vector<int> touching, holding, located;
   };
   // the frame of a pass of `slave`'s nodes against `master` (held: false)
   PassFrame FrameOf(int master, int slave);
