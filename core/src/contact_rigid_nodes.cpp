@@ -56,6 +56,14 @@ std::array<double, 3> FacePush(const std::vector<Crossing>& crossings, std::size
   return {push[0], push[1], push[2]};
 }
 
+// the share of a face at a crossing node that its free corners carry (barycentric weights)
+template <typename FreeCorner>
+double FreeShare(const Crossing& c, const std::array<int, 3>& tri, const FreeCorner& free_corner) {
+  double share = 0.0;
+  for (int corner = 0; corner < 3; ++corner) share += free_corner(tri[corner]) ? c.weight[corner] : 0.0;
+  return share;
+}
+
 // the areas the rigid nodes crossing one face [first, last) press it with: each its own contact area
 // (spec §3 A_v, in the rigid body's frame) times the face's share its free corners carry (a held
 // corner's own contact carries its barycentric share: its node area counts the face so), all
@@ -70,9 +78,7 @@ std::vector<double> PressedAreas(const std::vector<Crossing>& crossings, std::si
   double total = 0.0;
   for (std::size_t i = first; i < last; ++i) {
     const Crossing& c = crossings[i];
-    double free_share = 0.0;
-    for (int corner = 0; corner < 3; ++corner) free_share += free_corner(tri[corner]) ? c.weight[corner] : 0.0;
-    areas.push_back(free_share * own_area(c));
+    areas.push_back(FreeShare(c, tri, free_corner) * own_area(c));
     total += areas.back();
   }
   const double free_part = face_area * free_corners / 3.0;
@@ -110,11 +116,6 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
     return !std::binary_search(engaged.touching.begin(), engaged.touching.end(), v) &&
            !std::binary_search(engaged.located.begin(), engaged.located.end(), v);
   };
-  auto pushable = [&](const Crossing& c, const std::array<int, 3>& tri) {
-    double free_share = 0.0;
-    for (int corner = 0; corner < 3; ++corner) free_share += free_corner(tri[corner]) ? c.weight[corner] : 0.0;
-    return free_share >= 0.5;
-  };
   chunks_.resize(std::max(chunks_.size(), ChunkCount(candidates.size())));
   std::vector<std::vector<Crossing>> found(ChunkCount(candidates.size()));
   ForEachChunk(candidates.size(), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
@@ -126,7 +127,7 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
       const auto& tri = m.mesh.triangles[hit.triangle];
       Crossing c{candidates[i], hit.triangle, hit.depth, f.ToMaster(f.slave->vertices[candidates[i]]), hit.normal};
       c.weight = ClampedBarycentric(c.point, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
-      if (pushable(c, tri)) found[chunk].push_back(c);
+      if (FreeShare(c, tri, free_corner) >= 0.5) found[chunk].push_back(c);
     }
   });
   std::vector<Crossing> crossings;
