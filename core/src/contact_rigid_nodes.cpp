@@ -16,6 +16,10 @@ namespace {
 // fit (one node, nodes in a line) the least push
 constexpr double kFitRegularisation = 1e-6;
 
+// the least share of a face its free corners carry at a crossing rigid node for that node to push it:
+// the half of the face nearer them (nearer a held corner, the held node's own contact carries it)
+constexpr double kFreeShareToPush = 0.5;
+
 // a rigid node that crossed a deformable face in the last step (deformable frame)
 struct Crossing {
   int node = 0;          // rigid vertex
@@ -54,6 +58,13 @@ std::array<double, 3> FacePush(const std::vector<Crossing>& crossings, std::size
   }
   const Vec3 push = normal.ldlt().solve(right).cwiseMax(0.0).cwiseMin(deepest);
   return {push[0], push[1], push[2]};
+}
+
+// the end of the run of crossings on the face of crossings[first] (crossings sorted by face)
+std::size_t FaceEnd(const std::vector<Crossing>& crossings, std::size_t first) {
+  std::size_t last = first;
+  while (last < crossings.size() && crossings[last].triangle == crossings[first].triangle) ++last;
+  return last;
 }
 
 // the share of a face at a crossing node that its free corners carry (barycentric weights)
@@ -127,7 +138,7 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
       const auto& tri = m.mesh.triangles[hit.triangle];
       Crossing c{candidates[i], hit.triangle, hit.depth, f.ToMaster(f.slave->vertices[candidates[i]]), hit.normal};
       c.weight = ClampedBarycentric(c.point, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
-      if (FreeShare(c, tri, free_corner) >= 0.5) found[chunk].push_back(c);
+      if (FreeShare(c, tri, free_corner) >= kFreeShareToPush) found[chunk].push_back(c);
     }
   });
   std::vector<Crossing> crossings;
@@ -144,8 +155,7 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
   std::vector<Vec3>& pending = pending_delta_[deformable];
   std::vector<int> corners;
   for (std::size_t first = 0; first < crossings.size();) {
-    std::size_t last = first;
-    while (last < crossings.size() && crossings[last].triangle == crossings[first].triangle) ++last;
+    const std::size_t last = FaceEnd(crossings, first);
     const auto& tri = m.mesh.triangles[crossings[first].triangle];
     const std::array<double, 3> push =
         FacePush(crossings, first, last, {!free_corner(tri[0]), !free_corner(tri[1]), !free_corner(tri[2])});
@@ -204,14 +214,13 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
     return ContactNodeArea(*f.slave_model, *f.slave, c.node, normal_rigid, c.depth);
   };
   for (std::size_t first = 0; first < crossings.size();) {
-    std::size_t last = first;
-    while (last < crossings.size() && crossings[last].triangle == crossings[first].triangle) ++last;
+    const std::size_t last = FaceEnd(crossings, first);
     const int t = crossings[first].triangle;
     const std::vector<double> areas =
         PressedAreas(crossings, first, last, m.mesh.triangles[t], s.tri_area[t], free_corner, own_area);
+    const Stiffness k = CornerAverage(m, m.mesh.triangles[t]);
     for (std::size_t i = first; i < last; ++i) {
       const Crossing& c = crossings[i];
-      const Stiffness k = CornerAverage(m, m.mesh.triangles[c.triangle]);
       const auto [from, top] = crush_at(c, false);
       const double to = crush_at(c, true)[0];
       if (!(to > from)) continue;

@@ -303,9 +303,10 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
     if (LocateNode(f, v, was_touching, &pressed_on, &out->scratch, &again) && again.depth < hit.depth) hit = again;
   }
   if (found) ++out->diag.located;
-  // a node that found the master closing on it, or lies behind its surface: its own contact takes
-  // the faces round it
-  if (found && (hit.rel_velocity.dot(hit.normal) < 0.0 || hit.depth > 0.0)) out->located.push_back(v);
+  // a node that found a rigid master closing on it, or lies behind its surface: its own contact takes
+  // the faces round it from the master's nodes (PushFacesOffRigidNodes; no other pass reads it)
+  if (f.master_model->rigid && found && (hit.rel_velocity.dot(hit.normal) < 0.0 || hit.depth > 0.0))
+    out->located.push_back(v);
   if (!found && engagement == Engagement::kNone) return;
   // whether the bodies still close on a node that found no face: along its last contact normal, or,
   // holding a spring, along its crush (the line the master pressed it along). spec §6: a held node

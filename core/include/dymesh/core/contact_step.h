@@ -127,8 +127,8 @@ class ContactEngine {
   // master closed on (spec §6), or neither
   enum class Engagement : char { kNone, kTouching, kHolding };
   // the slave nodes of one side of a pair that stay in the pass's candidates (both ascending), and
-  // those that met the master at their last update (ascending: a rigid master's nodes leave the
-  // faces round them to their own contact)
+  // those that met a rigid master at their last update (ascending: its nodes leave the faces round
+  // them to their own contact)
   struct EngagedNodes {
     std::vector<int> touching, holding, located;
   };
