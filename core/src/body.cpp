@@ -53,7 +53,7 @@ BodyModel MakeBodyModel(std::string name, TriMesh mesh, const std::array<Stiffne
   const BodyState rest = MakeBodyState(m, RigidState{});
   m.surface.resize(m.mesh.vertices.size());
   for (size_t v = 0; v < m.surface.size(); ++v) {
-    m.surface[v] = ClassifySurface(AreaWeightedNormal(m, rest, static_cast<int>(v)));
+    m.surface[v] = ClassifySurface(rest.vertex_normal[v]);
   }
   return m;
 }
@@ -71,10 +71,11 @@ BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid) {
   s.update_step.assign(nv, -1);
   s.step_start_deflection.assign(nv, 0.0);
   s.contact_normal.assign(nv, Vec3::Zero());
+  s.vertex_normal.assign(nv, Vec3::Zero());
+  s.normal_stale.assign(nv, 0);
   s.tri_normal.assign(nt, Vec3::Zero());
-  s.tri_centre.assign(nt, Vec3::Zero());
   s.tri_area.assign(nt, 0.0);
-  // triangle normals, centres and areas of the undamaged mesh
+  // triangle normals and areas, and vertex normals, of the undamaged mesh
   std::vector<int> all(nv);
   for (size_t v = 0; v < nv; ++v) all[v] = static_cast<int>(v);
   UpdateTriangles(model, all, &s);
@@ -96,7 +97,17 @@ void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, B
       const double twice_area = cross.norm();
       s->tri_area[t] = 0.5 * twice_area;
       s->tri_normal[t] = twice_area > 0.0 ? Vec3(cross / twice_area) : Vec3::Zero();
-      s->tri_centre[t] = (a + b + c) / 3.0;
+      for (int corner : tri) s->normal_stale[corner] = 1;
+    }
+  }
+  // the normal of each corner of those triangles, once
+  for (int v : vertices) {
+    for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
+      for (int corner : model.mesh.triangles[adj.ids[k]]) {
+        if (!s->normal_stale[corner]) continue;
+        s->normal_stale[corner] = 0;
+        s->vertex_normal[corner] = AreaWeightedNormal(model, *s, corner);
+      }
     }
   }
 }

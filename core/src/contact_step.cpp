@@ -578,7 +578,7 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   const double backoff = options_.search_backoff, reach = options_.toofar_maximum;
 
   // the slave's inward side at the node, master frame (the surfaces must face each other)
-  const Vec3 inward = -(f.r_slave_to_master * AreaWeightedNormal(*f.slave_model, *f.slave, v));
+  const Vec3 inward = -(f.r_slave_to_master * f.slave->vertex_normal[v]);
   // a node in contact keeps meeting faces turned the same way (it left the last one through its
   // outside): a crushed-through panel's inner face does not take over and pull it in
   const Vec3 previous = was_touching ? Vec3(f.r_slave_to_master * f.slave->contact_normal[v]) : Vec3::Zero();

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "dymesh/core/body.h"
 
@@ -53,6 +54,30 @@ TEST(LocalAverageNormal, AFaceCrushedFlatDropsOut) {
   for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k)
     if (s.tri_normal[adj.ids[k]].x() > 0.5) s.tri_area[adj.ids[k]] = 0.0;
   EXPECT_LT((LocalAverageNormal(model, s, v) - Vec3(0, 1, 0)).norm(), 1e-12);
+}
+
+TEST(AreaWeightedNormal, TheKeptVertexNormalsFollowEveryCrush) {
+  // the state keeps each vertex's normal (Location reads it for every node it searches): after the
+  // front's nodes are pushed in unevenly, every vertex's kept normal is the one summed afresh from its
+  // faces, bit for bit, the moved nodes' neighbours included (they share the turned faces)
+  const BodyModel model = Box(60);
+  BodyState s = MakeBodyState(model, RigidState{});
+  std::vector<int> moved;
+  for (size_t v = 0; v < model.mesh.vertices.size(); ++v) {
+    const Vec3& p = model.mesh.vertices[v];
+    if (p.x() < 2.2) continue;
+    s.vertices[v] = p - Vec3(0.3 + 0.2 * std::sin(7.0 * p.y()) * std::cos(5.0 * p.z()), 0.05 * p.z(), 0.0);
+    moved.push_back(static_cast<int>(v));
+  }
+  ASSERT_GT(moved.size(), 100u);
+  UpdateTriangles(model, moved, &s);
+  int turned = 0;
+  for (size_t v = 0; v < model.mesh.vertices.size(); ++v) {
+    const Vec3 fresh = AreaWeightedNormal(model, s, static_cast<int>(v));
+    EXPECT_EQ(s.vertex_normal[v], fresh) << "vertex " << v;
+    turned += fresh.x() < 0.999 && model.mesh.vertices[v].x() > 2.28 ? 1 : 0;
+  }
+  EXPECT_GT(turned, 100);  // the crush did turn the front's normals
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -54,8 +55,9 @@ struct BodyState {
   std::vector<int> update_step;      ///< step of the node's last update, -1 before any (n_vertices)
   std::vector<Vec3> contact_normal;  ///< [-] master's outward normal at the node's last contact, body frame; zero when free (n_vertices)
   std::vector<double> step_start_deflection;  ///< [m] |Delta| when the current step began (n_vertices)
+  std::vector<Vec3> vertex_normal;   ///< [-] AreaWeightedNormal of each vertex, kept by UpdateTriangles (n_vertices)
+  std::vector<std::uint8_t> normal_stale;  ///< UpdateTriangles' scratch: vertex normals to recompute (n_vertices)
   std::vector<Vec3> tri_normal;      ///< [-] unit outward normal, body frame (n_triangles)
-  std::vector<Vec3> tri_centre;      ///< [m] centre, body frame (n_triangles)
   std::vector<double> tri_area;      ///< [m^2] current area (n_triangles)
   std::vector<double> tri_area_orig; ///< [m^2] undamaged area (n_triangles)
   std::vector<int> touching;         ///< vertices in contact at their last update, ascending
@@ -64,10 +66,13 @@ struct BodyState {
   double friction_energy = 0.0;      ///< [J] ledger: this body's share of the friction work
 };
 
-/// Fresh state at rest pose: undamaged vertices, triangle normals and areas.
+/// Fresh state at rest pose: undamaged vertices, triangle normals and areas, vertex normals.
 BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid);
 
-/// Recomputes normal, centre and area of every triangle touching `vertices` (body frame).
+/// Recomputes normal and area of every triangle touching `vertices` (body frame), and the normal of
+/// every corner of those triangles (the one vertex normal a Location reads per node, kept instead of
+/// summed again from the faces around each node searched: a quarter of a car-to-car step at 1M
+/// triangles).
 void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, BodyState* state);
 
 /// Outward normal of vertex v, body frame, unit: the area-weighted mean of the surrounding triangle
