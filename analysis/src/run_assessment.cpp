@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "dymesh/analysis/crush_reach.h"
 #include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 
@@ -168,6 +169,16 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          "search reaches (%.3g m): the contact moved it out of the body instead of crushing it "
                          "in; the crush depths and profile there are not physical",
                          s.bodies[i].name.c_str(), out.vertex, out.distance, sc.contact.toofar_maximum)});
+    // a node crushed deeper along its crush than any other body came (spec §2: no push beyond the
+    // step's relative motion plus TOOFAR_MARGIN, so the margin is what a node may lie beyond it)
+    const NodeBeyondReach beyond = DeepestNodeBeyondReach(sim, i);
+    if (beyond.vertex >= 0 && beyond.crush - beyond.reach > sc.contact.toofar_margin)
+      w->push_back({"crush_beyond_reach", "bodies[" + std::to_string(i) + "]",
+                    Text("\"%s\": node %d is crushed %.3g m, %.3g m farther along its crush than any other body "
+                         "came (%.3g m): the contact pushed it there, not a body; the crush depths and profile "
+                         "there are not physical",
+                         s.bodies[i].name.c_str(), beyond.vertex, beyond.crush, beyond.crush - beyond.reach,
+                         beyond.reach)});
   }
   // a pair's contact that left it closing along its impulse at over half its closing speed, once the
   // run is over (still in contact, or stopped early, the bodies may yet be stopped: the status says so)

@@ -114,6 +114,65 @@ TEST(RoundPole, FrictionlessCentredPoleStillPushingAtTheEndIsMarked) {
   EXPECT_GT(r.delta_v, 0.9 * 20.0 * u::kMph) << "the pole let the car through";
 }
 
+// How far along a node's crush u, from its rest place p0, the pole ever came (car frame): the support
+// of a vertical cylinder, axis point c, radius r, half-height h, is c.u + r |u_xy| + h |u_z|, its
+// largest over the run's recorded states
+double PoleReach(const Simulation& sim, int car, int pole, const Vec3& p0, const Vec3& u) {
+  const MeshStats rest = ComputeStats(sim.engine().model(pole).mesh);
+  const Vec3 centre = 0.5 * (rest.min + rest.max);
+  const double r = 0.5 * (rest.max.x() - rest.min.x()), h = 0.5 * (rest.max.z() - rest.min.z());
+  double reach = -INFINITY;
+  for (const Sample& sample : sim.history()) {
+    const RigidState& a = sample.bodies[car].rigid;
+    const RigidState& b = sample.bodies[pole].rigid;
+    const Mat3 to_car = a.Rotation().transpose();
+    const Vec3 c = to_car * (b.position + b.Rotation() * centre - a.position);
+    const Vec3 axis = to_car * b.Rotation() * Vec3::UnitZ();
+    const double along_axis = u.dot(axis);
+    const double across = std::sqrt(std::max(0.0, 1.0 - along_axis * along_axis));
+    reach = std::max(reach, (c - p0).dot(u) + r * across + h * std::abs(along_axis));
+  }
+  return reach;
+}
+
+// Known answer: a node is crushed only where the pole pushed it, so along its crush it lies no farther
+// from its rest place than the pole came (PoleReach, exact for the cylinder). With the pole 5 in off,
+// faces of the car's crushed front are pushed by the pole's nodes and tipped past it (a least-squares
+// plane through a curved row of them: Known limits): the deepest crush scatters from 38 to 89 in under
+// 0.001 in moves of the pole while the pole reached about 42 in. Such a run must say so
+// (crush_beyond_reach); one whose every node lies within the pole's reach must not. The run's check
+// takes the pole as its bounding box (reach up to (sqrt 2 - 1) r = 2.5 in larger on a slant) and
+// allows TOOFAR_MARGIN (1 in, spec §2) past it: runs in that band may go either way
+TEST(RoundPole, CrushDeeperThanThePoleCameIsMarked) {
+  int beyond = 0;
+  for (int jitter = 0; jitter < 8; ++jitter) {
+    Scenario s = RoundPole(5.0);
+    s.bodies[1].initial.position.y() += 0.001 * jitter * u::kInch;
+    auto device = std::make_shared<const accel::EmbreeDevice>();
+    Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
+    sim.Run();
+    const BodyState& car = sim.engine().state(0);
+    const std::vector<Vec3>& rest = sim.engine().model(0).mesh.vertices;
+    double worst = -INFINITY;  // [m] the largest crush beyond the pole's reach
+    for (std::size_t v = 0; v < rest.size(); ++v) {
+      const double crush = car.delta[v].norm();
+      if (crush < 0.1) continue;  // the deepest nodes (the reach test is for those)
+      worst = std::max(worst, crush - PoleReach(sim, 0, 1, rest[v], car.delta[v] / crush));
+    }
+    const Summary sum = Summarize(sim);
+    bool marked = false;
+    for (const RunWarning& w : sum.warnings) marked = marked || (w.code == "crush_beyond_reach" && w.field == "bodies[0]");
+    std::printf("[measured] round pole 5 in off, moved %d thou: deepest crush %.1f in, %.1f in beyond the pole's "
+                "reach, marked %d\n", jitter, sum.bodies[0].max_crush / u::kInch, worst / u::kInch, marked ? 1 : 0);
+    if (worst > 3.5 * u::kInch) EXPECT_TRUE(marked) << jitter << " thou: crushed beyond the pole's reach, unmarked";
+    if (worst < 1.0 * u::kInch) EXPECT_FALSE(marked) << jitter << " thou: within the pole's reach, marked";
+    beyond += worst > 3.5 * u::kInch ? 1 : 0;
+  }
+  // the marking is exercised (7 of the 8 on 2026-11-26; none once the tipped faces are mended: then
+  // this check wants a case of its own)
+  EXPECT_GT(beyond, 0);
+}
+
 // a 3000 lb box (3 in cells) at 20 mph into the 12 in round pole 15 in off its axis, mu 0.3
 Scenario BoxIntoOffsetPole(const std::string& search_direction) {
   return ParseScenario(R"({"units": "US", "time": {"step": 0.0005, "duration": 1.5, "stop_at_separation": true},
