@@ -14,14 +14,18 @@ namespace {
 // by a face tipped past the body that pushed it), and the test stays cheap on a million vertices
 constexpr std::size_t kDeepestNodes = 256;
 
-// the corners of every other body's rest bounding box at every recorded state, in `body`'s frame
+// the corners of every other body's rest bounding box at every state recorded while the bodies were
+// in contact (a node is pushed only then), in `body`'s frame
 std::vector<Vec3> OtherBodiesCorners(const Simulation& sim, int body) {
   std::vector<Vec3> points;
+  if (sim.first_contact_time() < 0.0) return points;
   const ContactEngine& engine = sim.engine();
+  const double slack = 0.5 * sim.scenario().time_step;  // the recorded times' round-off
   for (int other = 0; other < engine.body_count(); ++other) {
     if (other == body) continue;
     const MeshStats rest = ComputeStats(engine.model(other).mesh);
     for (const Sample& sample : sim.history()) {
+      if (sample.time < sim.first_contact_time() - slack || sample.time > sim.last_contact_time() + slack) continue;
       const RigidState& a = sample.bodies[body].rigid;
       const RigidState& b = sample.bodies[other].rigid;
       const Mat3 to_body = a.Rotation().transpose();
