@@ -15,8 +15,8 @@ struct NodeBeyondReach {
 /// The node of body `body` that lies farthest beyond the other bodies' reach, of its deepest nodes
 /// (spec §2-§5: a node moves only where another body's surface pushes it, so it lies, along its
 /// crush, no deeper than some point of that body came). The other bodies are taken as their rest
-/// bounding boxes at every state recorded while the bodies touched, in this body's frame: a crushed body reaches less far, so
-/// the reach is never under-estimated. vertex is -1 when none lies beyond it.
+/// bounding boxes at every state recorded while the bodies touched, in this body's frame: a crushed
+/// body reaches less far, so the reach is never under-estimated. vertex is -1 when none lies beyond it.
 NodeBeyondReach DeepestNodeBeyondReach(const Simulation& sim, int body);
 
 }  // namespace dymesh
