@@ -24,16 +24,17 @@ std::vector<Vec3> OtherBodiesCorners(const Simulation& sim, int body) {
   for (int other = 0; other < engine.body_count(); ++other) {
     if (other == body) continue;
     const MeshStats rest = ComputeStats(engine.model(other).mesh);
+    std::vector<Vec3> corners;
+    for (int corner = 0; corner < 8; ++corner)
+      corners.emplace_back((corner & 1) ? rest.max.x() : rest.min.x(), (corner & 2) ? rest.max.y() : rest.min.y(),
+                           (corner & 4) ? rest.max.z() : rest.min.z());
     for (const Sample& sample : sim.history()) {
       if (sample.time < sim.first_contact_time() - slack || sample.time > sim.last_contact_time() + slack) continue;
       const RigidState& a = sample.bodies[body].rigid;
       const RigidState& b = sample.bodies[other].rigid;
       const Mat3 to_body = a.Rotation().transpose();
-      for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 q((corner & 1) ? rest.max.x() : rest.min.x(), (corner & 2) ? rest.max.y() : rest.min.y(),
-                     (corner & 4) ? rest.max.z() : rest.min.z());
-        points.push_back(to_body * (b.position + b.Rotation() * q - a.position));
-      }
+      const Mat3 other_to_earth = b.Rotation();
+      for (const Vec3& q : corners) points.push_back(to_body * (b.position + other_to_earth * q - a.position));
     }
   }
   return points;

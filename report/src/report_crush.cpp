@@ -66,12 +66,13 @@ std::string CrushView(const Context& c, int i, const Projection& pr, int width) 
   std::vector<int> visible;
   for (int t = 0; t < static_cast<int>(state.tri_normal.size()); ++t)
     if (state.tri_normal[t][pr.depth] * pr.toward > 0.0) visible.push_back(t);
-  auto centre_depth = [&](int t) {
+  std::vector<double> depth(state.tri_normal.size());  // each visible triangle's centre toward the viewer
+  for (int t : visible) {
     const auto& tri = model.mesh.triangles[t];
     const Vec3 centre = (state.vertices[tri[0]] + state.vertices[tri[1]] + state.vertices[tri[2]]) / 3.0;
-    return centre[pr.depth] * pr.toward;
-  };
-  std::stable_sort(visible.begin(), visible.end(), [&](int a, int b) { return centre_depth(a) < centre_depth(b); });
+    depth[t] = centre[pr.depth] * pr.toward;
+  }
+  std::stable_sort(visible.begin(), visible.end(), [&](int a, int b) { return depth[a] < depth[b]; });
   // data box: the undamaged and crushed meshes, with room for the station labels
   double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
   for (const auto* vs : {&model.mesh.vertices, &state.vertices})
