@@ -5,6 +5,7 @@
 #include <string>
 
 #include "dymesh/analysis/crush_reach.h"
+#include "dymesh/analysis/obstacle_inside.h"
 #include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
 
@@ -40,6 +41,24 @@ double TotalLoad(const Sample& s) {
   double f = 0.0;
   for (const BodySample& b : s.bodies) f += b.loads.force_earth.norm();
   return f;
+}
+
+// a rigid body's vertex deepest inside the deformable body of its pair beyond the crush there, kept
+// where that is more than the search reaches (spec §2 TOOFAR_MAXIMUM)
+struct RigidInside {
+  int body = -1, obstacle = -1, vertex = -1;
+  double depth = 0.0;  // [m]
+};
+RigidInside RigidBodyInside(const Simulation& sim, const PairSummary& p) {
+  RigidInside out;
+  const bool rigid_a = sim.engine().model(p.a).rigid, rigid_b = sim.engine().model(p.b).rigid;
+  if (rigid_a == rigid_b) return out;
+  const int body = rigid_a ? p.b : p.a, obstacle = rigid_a ? p.a : p.b;
+  // out of the deformable body toward the rigid one: against the impulse the rigid one gave it
+  const Vec3 toward = body == p.a ? Vec3(-p.direction) : p.direction;
+  const ObstacleInside deepest = DeepestObstacleVertexInside(sim, body, obstacle, toward);
+  if (deepest.depth > sim.scenario().contact.toofar_maximum) out = {body, obstacle, deepest.vertex, deepest.depth};
+  return out;
 }
 
 // in contact at the end but at rest: every pair's relative speed small and the load not growing
@@ -180,16 +199,29 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          s.bodies[i].name.c_str(), beyond.vertex, beyond.crush, beyond.crush - beyond.reach,
                          beyond.reach)});
   }
-  // a pair's contact that left it closing along its impulse at over half its closing speed, once the
-  // run is over (still in contact, or stopped early, the bodies may yet be stopped: the status says so)
-  for (const PairSummary& p : s.pairs)
-    if (status == RunStatus::kComplete && p.closing_speed > 0.0 && p.restitution() < kPassThroughSeparation)
+  for (const PairSummary& p : s.pairs) {
+    // a rigid body that ended deeper inside a deformable one than it crushed, past the search's reach
+    const RigidInside inside = RigidBodyInside(sim, p);
+    if (inside.vertex >= 0)
+      w->push_back({"obstacle_inside", "",
+                    Text("\"%s\" ended %.3g m deeper inside \"%s\" than it crushed there (its vertex %d), more than "
+                         "the contact search reaches (%.3g m): it went in between the nodes, which slid aside or never "
+                         "met it, and was never pushed out; the crush, its profile and the energies there are not "
+                         "physical",
+                         s.bodies[inside.obstacle].name.c_str(), inside.depth, s.bodies[inside.body].name.c_str(),
+                         inside.vertex, sc.contact.toofar_maximum)});
+    // the pair's contact left it closing along its impulse at over half its closing speed, or still
+    // closing with the rigid body inside, once the run is over (still in contact, or stopped early,
+    // the bodies may yet be stopped: the status says so)
+    const bool closing = p.restitution() < (inside.vertex >= 0 ? 0.0 : kPassThroughSeparation);
+    if (status == RunStatus::kComplete && p.closing_speed > 0.0 && closing)
       w->push_back({"passed_through", "",
                     Text("\"%s\" and \"%s\" still closed at %.0f %% of their closing speed when the run ended: "
                          "they passed through each other instead of crushing (coarse meshes whose faces meet "
                          "between their nodes); delta-V, crush and energies are not physical",
                          s.bodies[p.a].name.c_str(), s.bodies[p.b].name.c_str(),
                          -100.0 * p.restitution())});
+  }
   if (s.diagnostics.non_finite > 0)
     w->push_back({"non_finite_nodes", "",
                   Text("%lld node updates were skipped as non-finite", s.diagnostics.non_finite)});

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "dymesh/core/geometry.h"
+
+/// Whether a rigid body ended inside a deformable body, past what the contact search can reach.
+namespace dymesh {
+
+class Simulation;
+
+/// The rigid body's vertex that lies farthest inside a deformable body beyond the body's crush there.
+struct ObstacleInside {
+  int vertex = -1;     ///< the rigid body's vertex, or -1 when none does (or the body is not closed)
+  double depth = 0.0;  ///< [m] how far behind the body's rest front it lies, beyond the crush there
+};
+
+/// The vertex of rigid body `obstacle` that lies deepest inside deformable body `body` beyond the
+/// crush the body took there, where the run ended, measured along `toward_earth` (unit, earth frame:
+/// out of `body` toward where the obstacle came from, against the normal impulse it gave the body).
+/// spec §2-§5: a node is pushed out of the master, so where a rigid body came in the body's surface
+/// was crushed as deep as it came; a rigid body deeper than that went in between the nodes (the nodes
+/// slid aside, or never met it) and the contact no longer sees it once past TOOFAR_MAXIMUM. Judged
+/// for a closed `body` mesh only (a display mesh's panels and interior parts have no front and back
+/// to be inside), on the rigid body's vertices facing into the body along the line (one on its flank
+/// lies against the notch's walls), against the shallowest rest front and the deepest crush (the
+/// corners' deepest crush interpolated across each face) in the lateral cells round each vertex
+/// (the body's median edge, the vertex's cell and its eight neighbours).
+ObstacleInside DeepestObstacleVertexInside(const Simulation& sim, int body, int obstacle, const Vec3& toward_earth);
+
+}  // namespace dymesh
