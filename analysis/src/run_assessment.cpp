@@ -210,10 +210,11 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          "physical",
                          s.bodies[inside.obstacle].name.c_str(), inside.depth, s.bodies[inside.body].name.c_str(),
                          inside.vertex, sc.contact.toofar_maximum)});
-    // the pair's contact left it closing along its impulse at over half its closing speed, or still
-    // closing with the rigid body inside, once the run is over (still in contact, or stopped early,
+    // the pair's contact left it closing along its impulse at over half its closing speed, or at over
+    // a quarter with the rigid body inside, once the run is over (still in contact, or stopped early,
     // the bodies may yet be stopped: the status says so)
-    const bool closing = p.restitution() < (inside.vertex >= 0 ? 0.0 : kPassThroughSeparation);
+    const bool closing =
+        p.restitution() < (inside.vertex >= 0 ? kPassThroughWithObstacleInside : kPassThroughSeparation);
     if (status == RunStatus::kComplete && p.closing_speed > 0.0 && closing)
       w->push_back({"passed_through", "",
                     Text("\"%s\" and \"%s\" still closed at %.0f %% of their closing speed when the run ended: "

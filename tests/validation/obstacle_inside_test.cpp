@@ -77,8 +77,8 @@ Outcome RunBoxIntoPole(double cell, double mu, bool subdivided = false) {
 constexpr double kReach = 6.0;  // [in]
 
 // Frictionless, the 2 in cells' nodes slid round the pole and it went 45 in into a box that crushed
-// 11 in (the closed form crushes 12.71 in and stops the box): marked, and, the pair still closing
-// with the pole inside, passed through (voided). Before, `complete` without a warning (48 % of the
+// 11 in (the closed form crushes 12.71 in and stops the box): marked, and, the pair still closing at
+// over a quarter of its closing speed with the pole inside, passed through (voided). Before, `complete` without a warning (48 % of the
 // closing speed left; passed_through alone needs 50 %).
 TEST(ObstacleInside, PoleThatWentInBetweenTheNodesIsMarked) {
   const Outcome o = RunBoxIntoPole(2.0, 0.0);
