@@ -204,12 +204,12 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
     const RigidInside inside = RigidBodyInside(sim, p);
     if (inside.vertex >= 0)
       w->push_back({"obstacle_inside", "",
-                    Text("\"%s\" ended %.3g m deeper inside \"%s\" than it crushed there (its vertex %d), more than "
-                         "the contact search reaches (%.3g m): it went in between the nodes, which slid aside or never "
-                         "met it, and was never pushed out; the crush, its profile and the energies there are not "
-                         "physical",
-                         s.bodies[inside.obstacle].name.c_str(), inside.depth, s.bodies[inside.body].name.c_str(),
-                         inside.vertex, sc.contact.toofar_maximum)});
+                    Text("\"%s\" (its vertex %d) ended inside \"%s\" %.3g m deeper than \"%s\" was crushed there, "
+                         "more than the contact search reaches (%.3g m): it went in between the nodes, which slid aside "
+                         "or never met it, and was never pushed out; the crush, its profile and the energies there are "
+                         "not physical",
+                         s.bodies[inside.obstacle].name.c_str(), inside.vertex, s.bodies[inside.body].name.c_str(),
+                         inside.depth, s.bodies[inside.body].name.c_str(), sc.contact.toofar_maximum)});
     // the pair's contact left it closing along its impulse at over half its closing speed, or at over
     // a quarter with the rigid body inside, once the run is over (still in contact, or stopped early,
     // the bodies may yet be stopped: the status says so)
