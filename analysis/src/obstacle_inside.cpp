@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 #include "dymesh/core/simulation.h"
 
@@ -87,6 +88,22 @@ class RestSurfaceAlongLine {
   std::unordered_map<std::int64_t, Cell> cells_;
 };
 
+// the recorded states from the first contact on, at most kStates of them evenly spaced, and the last
+// (an obstacle that went in between the nodes may have come out the far side by the end)
+constexpr std::size_t kStates = 256;
+std::vector<const Sample*> StatesFromFirstContact(const Simulation& sim) {
+  std::vector<const Sample*> states;
+  const std::vector<Sample>& history = sim.history();
+  if (sim.first_contact_time() < 0.0 || history.empty()) return states;
+  const double slack = 0.5 * sim.scenario().time_step;  // the recorded times' round-off
+  std::size_t first = 0;
+  while (first + 1 < history.size() && history[first].time < sim.first_contact_time() - slack) ++first;
+  const std::size_t stride = std::max<std::size_t>(1, (history.size() - first) / kStates);
+  for (std::size_t i = first; i < history.size(); i += stride) states.push_back(&history[i]);
+  if (states.back() != &history.back()) states.push_back(&history.back());
+  return states;
+}
+
 }  // namespace
 
 ObstacleInside DeepestObstacleVertexInside(const Simulation& sim, int body, int obstacle, const Vec3& toward_earth) {
@@ -94,25 +111,35 @@ ObstacleInside DeepestObstacleVertexInside(const Simulation& sim, int body, int 
   const BodyModel& model = sim.engine().model(body);
   const MeshStats stats = ComputeStats(model.mesh);
   if (stats.open_edges > 0 || stats.nonmanifold_edges > 0 || !(toward_earth.norm() > 0.0)) return deepest;
-  // the body's rest surface in its frame, seen along the line the obstacle came in on, with the
-  // deepest crush each node took
+  const std::vector<const Sample*> states = StatesFromFirstContact(sim);
+  if (states.empty()) return deepest;
+  // the body's rest surface in its frame, seen along the line the obstacle came in on (the pair's
+  // impulse, in the body's frame as the contact began: the body may spin away after it), with the
+  // deepest crush each node took by the end (at least what it had at any state: never a flag where
+  // the body had crushed round the obstacle)
   const BodyState& s = sim.engine().state(body);
-  const Mat3 to_body = s.rigid.Rotation().transpose();
-  RestSurfaceAlongLine surface((to_body * toward_earth).normalized(), MedianEdgeLength(model.mesh));
+  const Mat3 began_to_body = states.front()->bodies[body].rigid.Rotation().transpose();
+  RestSurfaceAlongLine surface((began_to_body * toward_earth).normalized(), MedianEdgeLength(model.mesh));
   for (const auto& tri : model.mesh.triangles) {
     const Vec3 corner[3] = {model.mesh.vertices[tri[0]], model.mesh.vertices[tri[1]], model.mesh.vertices[tri[2]]};
     const double crush[3] = {s.delta_max[tri[0]], s.delta_max[tri[1]], s.delta_max[tri[2]]};
     surface.AddFace(corner, crush);
   }
-  // the obstacle's vertices that face into the body along the line, where the run ended, in the
-  // body's frame (one on its flank lies against the crushed surface's walls, across the line)
+  // the obstacle's vertices that face into the body along the line, in the body's frame, at the
+  // states recorded from the first contact on (one on its flank lies against the crushed surface's
+  // walls, across the line)
   const BodyState& o = sim.engine().state(obstacle);
-  const Mat3 obstacle_to_body = to_body * o.rigid.Rotation();
-  for (std::size_t v = 0; v < o.vertices.size(); ++v) {
-    if (-(obstacle_to_body * o.vertex_normal[v]).dot(surface.line()) <= kFacingLine) continue;
-    const Vec3 p = obstacle_to_body * o.vertices[v] + to_body * (o.rigid.position - s.rigid.position);
-    const double depth = surface.DepthBeyondCrush(p);
-    if (depth > deepest.depth) deepest = {static_cast<int>(v), depth};
+  for (const Sample* sample : states) {
+    const RigidState& b = sample->bodies[body].rigid;
+    const RigidState& r = sample->bodies[obstacle].rigid;
+    const Mat3 earth_to_body = b.Rotation().transpose();
+    const Mat3 obstacle_to_body = earth_to_body * r.Rotation();
+    const Vec3 offset = earth_to_body * (r.position - b.position);
+    for (std::size_t v = 0; v < o.vertices.size(); ++v) {
+      if (-(obstacle_to_body * o.vertex_normal[v]).dot(surface.line()) <= kFacingLine) continue;
+      const double depth = surface.DepthBeyondCrush(obstacle_to_body * o.vertices[v] + offset);
+      if (depth > deepest.depth) deepest = {static_cast<int>(v), depth};
+    }
   }
   return deepest;
 }

@@ -43,8 +43,8 @@ double TotalLoad(const Sample& s) {
   return f;
 }
 
-// a rigid body's vertex deepest inside the deformable body of its pair beyond the crush there, kept
-// where that is more than the search reaches (spec §2 TOOFAR_MAXIMUM)
+// a rigid body's vertex that went deepest inside the deformable body of its pair beyond the crush
+// there, kept where that is more than the search reaches (spec §2 TOOFAR_MAXIMUM)
 struct RigidInside {
   int body = -1, obstacle = -1, vertex = -1;
   double depth = 0.0;  // [m]
@@ -200,18 +200,18 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          beyond.reach)});
   }
   for (const PairSummary& p : s.pairs) {
-    // a rigid body that ended deeper inside a deformable one than it crushed, past the search's reach
+    // a rigid body that went deeper inside a deformable one than it crushed, past the search's reach
     const RigidInside inside = RigidBodyInside(sim, p);
     if (inside.vertex >= 0)
       w->push_back({"obstacle_inside", "",
-                    Text("\"%s\" (its vertex %d) ended inside \"%s\" %.3g m deeper than \"%s\" was crushed there, "
+                    Text("\"%s\" (its vertex %d) went inside \"%s\" %.3g m deeper than \"%s\" was crushed there, "
                          "more than the contact search reaches (%.3g m): it went in between the nodes, which slid aside "
                          "or never met it, and was never pushed out; the crush, its profile and the energies there are "
                          "not physical",
                          s.bodies[inside.obstacle].name.c_str(), inside.vertex, s.bodies[inside.body].name.c_str(),
                          inside.depth, s.bodies[inside.body].name.c_str(), sc.contact.toofar_maximum)});
     // the pair's contact left it closing along its impulse at over half its closing speed, or at over
-    // a quarter with the rigid body inside, once the run is over (still in contact, or stopped early,
+    // a quarter with the rigid body gone inside, once the run is over (still in contact, or stopped early,
     // the bodies may yet be stopped: the status says so)
     const bool closing =
         p.restitution() < (inside.vertex >= 0 ? kPassThroughWithObstacleInside : kPassThroughSeparation);

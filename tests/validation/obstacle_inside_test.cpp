@@ -31,11 +31,12 @@ struct Outcome {
 // the 3000 lb box (A 300 lb/in, B 100 lb/in^2, e 0) at 10 mph into the fixed 12 in round pole on its
 // axis, 0.5 in apart, its front in `cell` in cells, friction `mu` on both; `subdivided` meshes the
 // box as one quad per side split 1:4 three times instead (nodes 8.25 in apart across the front) and
-// puts a 6 in square post between its node columns in place of the pole
-Outcome RunBoxIntoPole(double cell, double mu, bool subdivided = false) {
+// puts a 6 in square post between its node columns in place of the pole; `carried_on` runs 3 s
+// without the stop at separation
+Outcome RunBoxIntoPole(double cell, double mu, bool subdivided = false, bool carried_on = false) {
   char json[2048];
   const int nx = static_cast<int>(180 / cell), ny = static_cast<int>(66 / cell), nz = static_cast<int>(30 / cell);
-  std::snprintf(json, sizeof json, R"({"units": "US", "time": {"step": 0.0005, "duration": 0.6, "stop_at_separation": true},
+  std::snprintf(json, sizeof json, R"({"units": "US", "time": {"step": 0.0005, "duration": %g, "stop_at_separation": %s},
     "contact": {"passes_per_step": 2},
     "bodies": [
       {"name": "box", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [%d, %d, %d]}%s},
@@ -44,7 +45,7 @@ Outcome RunBoxIntoPole(double cell, double mu, bool subdivided = false) {
        "initial": {"position": [0, 0, 0], "heading": 0, "speed": 10}},
       {"name": "pole", "mesh": %s, "rigid": true, "motion": "fixed", "friction": %g,
        "initial": {"position": [%g, 0, 0]}}]})",
-                subdivided ? 1 : nx, subdivided ? 1 : ny, subdivided ? 1 : nz, subdivided ? R"(, "subdivisions": 3)" : "",
+                carried_on ? 3.0 : 0.6, carried_on ? "false" : "true", subdivided ? 1 : nx, subdivided ? 1 : ny, subdivided ? 1 : nz, subdivided ? R"(, "subdivisions": 3)" : "",
                 mu, subdivided ? R"({"box": {"length": 6, "width": 6, "height": 100, "segments": [6, 6, 100]}})"
                                : R"({"cylinder": {"radius": 6, "height": 100, "segments": 32}})",
                 mu, subdivided ? 93.5 : 96.5);
@@ -65,9 +66,10 @@ Outcome RunBoxIntoPole(double cell, double mu, bool subdivided = false) {
     o.inside = o.inside || w.code == "obstacle_inside";
     o.voided = o.voided || WarningVoidsResults(w.code);
   }
-  std::printf("[measured] %g in cells, mu %g%s: pole %.2f in into the rest front, deepest crush %.2f in, "
+  std::printf("[measured] %g in cells, mu %g%s%s: pole %.2f in into the rest front, deepest crush %.2f in, "
               "delta-V %.2f mph, marked %d, voided %d\n",
-              cell, mu, subdivided ? " (post between node columns)" : "", o.intrusion, o.crush, o.delta_v,
+              cell, mu, subdivided ? " (post between node columns)" : "", carried_on ? ", carried on to 3 s" : "",
+              o.intrusion, o.crush, o.delta_v,
               o.inside, o.voided);
   return o;
 }
@@ -85,6 +87,12 @@ TEST(ObstacleInside, PoleThatWentInBetweenTheNodesIsMarked) {
   ASSERT_GT(o.intrusion - o.crush, kReach);  // the case: deeper than any crush, by more than the reach
   EXPECT_TRUE(o.inside);
   EXPECT_TRUE(o.voided);
+  // carried on without the stop, the pole leaves through the box's back (it did, unmarked, before the
+  // check read every recorded state)
+  const Outcome on = RunBoxIntoPole(2.0, 0.0, false, true);
+  ASSERT_GT(on.intrusion, 180.0);  // [in] behind the rest front: past the 180 in box
+  EXPECT_TRUE(on.inside);
+  EXPECT_TRUE(on.voided);
 }
 
 // With friction the box crushes as deep as the pole came (a box stopped against a rigid pole closes

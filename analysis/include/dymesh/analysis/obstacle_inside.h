@@ -2,20 +2,23 @@
 
 #include "dymesh/core/geometry.h"
 
-/// Whether a rigid body ended inside a deformable body, past what the contact search can reach.
+/// Whether a rigid body went inside a deformable body, past what the contact search can reach.
 namespace dymesh {
 
 class Simulation;
 
-/// The rigid body's vertex that lies farthest inside a deformable body beyond the body's crush there.
+/// The rigid body's vertex that came farthest inside a deformable body beyond the body's crush there.
 struct ObstacleInside {
   int vertex = -1;     ///< the rigid body's vertex, or -1 when none does (or the body is not closed)
-  double depth = 0.0;  ///< [m] how far behind the body's rest front it lies, beyond the crush there
+  double depth = 0.0;  ///< [m] how far behind the body's rest front it came, beyond the crush there
 };
 
 /// The vertex of rigid body `obstacle` that lies deepest inside deformable body `body` beyond the
-/// crush the body took there, where the run ended, measured along `toward_earth` (unit, earth frame:
-/// out of `body` toward where the obstacle came from, against the normal impulse it gave the body).
+/// crush the body took there, at any state recorded from the first contact on (at most 256, evenly
+/// spaced, and the last: an obstacle that went in between the nodes may be out the far side by the
+/// end), measured along `toward_earth` (unit, earth frame: out of `body` toward where the obstacle
+/// came from, against the normal impulse it gave the body; taken in the body's frame as the contact
+/// began), against the deepest crush the body ended with.
 /// spec §2-§5: a node is pushed out of the master, so where a rigid body came in the body's surface
 /// was crushed as deep as it came; a rigid body deeper than that went in between the nodes (the nodes
 /// slid aside, or never met it) and the contact no longer sees it once past TOOFAR_MAXIMUM. Judged
