@@ -45,7 +45,8 @@ Outcome RunBoxIntoPole(double cell, double mu, bool subdivided = false, bool car
        "initial": {"position": [0, 0, 0], "heading": 0, "speed": 10}},
       {"name": "pole", "mesh": %s, "rigid": true, "motion": "fixed", "friction": %g,
        "initial": {"position": [%g, 0, 0]}}]})",
-                carried_on ? 3.0 : 0.6, carried_on ? "false" : "true", subdivided ? 1 : nx, subdivided ? 1 : ny, subdivided ? 1 : nz, subdivided ? R"(, "subdivisions": 3)" : "",
+                carried_on ? 3.0 : 0.6, carried_on ? "false" : "true", subdivided ? 1 : nx, subdivided ? 1 : ny,
+                subdivided ? 1 : nz, subdivided ? R"(, "subdivisions": 3)" : "",
                 mu, subdivided ? R"({"box": {"length": 6, "width": 6, "height": 100, "segments": [6, 6, 100]}})"
                                : R"({"cylinder": {"radius": 6, "height": 100, "segments": 32}})",
                 mu, subdivided ? 93.5 : 96.5);
@@ -69,8 +70,7 @@ Outcome RunBoxIntoPole(double cell, double mu, bool subdivided = false, bool car
   std::printf("[measured] %g in cells, mu %g%s%s: pole %.2f in into the rest front, deepest crush %.2f in, "
               "delta-V %.2f mph, marked %d, voided %d\n",
               cell, mu, subdivided ? " (post between node columns)" : "", carried_on ? ", carried on to 3 s" : "",
-              o.intrusion, o.crush, o.delta_v,
-              o.inside, o.voided);
+              o.intrusion, o.crush, o.delta_v, o.inside, o.voided);
   return o;
 }
 
@@ -80,8 +80,8 @@ constexpr double kReach = 6.0;  // [in]
 
 // Frictionless, the 2 in cells' nodes slid round the pole and it went 45 in into a box that crushed
 // 11 in (the closed form crushes 12.71 in and stops the box): marked, and, the pair still closing at
-// over a quarter of its closing speed with the pole inside, passed through (voided). Before, `complete` without a warning (48 % of the
-// closing speed left; passed_through alone needs 50 %).
+// over a quarter of its closing speed with the pole inside, passed through (voided). Before,
+// `complete` without a warning (48 % of the closing speed left; passed_through alone needs 50 %).
 TEST(ObstacleInside, PoleThatWentInBetweenTheNodesIsMarked) {
   const Outcome o = RunBoxIntoPole(2.0, 0.0);
   ASSERT_GT(o.intrusion - o.crush, kReach);  // the case: deeper than any crush, by more than the reach
