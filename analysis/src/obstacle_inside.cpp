@@ -106,11 +106,11 @@ std::vector<const Sample*> StatesFromFirstContact(const Simulation& sim) {
 
 }  // namespace
 
-ObstacleInside DeepestObstacleVertexInside(const Simulation& sim, int body, int obstacle, const Vec3& toward_earth) {
+ObstacleInside DeepestObstacleVertexInside(const Simulation& sim, int body, int obstacle, const Vec3& toward_earth,
+                                           const MeshStats& rest) {
   ObstacleInside deepest;
+  if (rest.open_edges > 0 || rest.nonmanifold_edges > 0 || !(toward_earth.norm() > 0.0)) return deepest;
   const BodyModel& model = sim.engine().model(body);
-  const MeshStats stats = ComputeStats(model.mesh);
-  if (stats.open_edges > 0 || stats.nonmanifold_edges > 0 || !(toward_earth.norm() > 0.0)) return deepest;
   const std::vector<const Sample*> states = StatesFromFirstContact(sim);
   if (states.empty()) return deepest;
   // the body's rest surface in its frame, seen along the line the obstacle came in on (the pair's

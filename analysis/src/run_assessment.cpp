@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "dymesh/analysis/crush_reach.h"
 #include "dymesh/analysis/obstacle_inside.h"
@@ -49,14 +50,14 @@ struct RigidInside {
   int body = -1, obstacle = -1, vertex = -1;
   double depth = 0.0;  // [m]
 };
-RigidInside RigidBodyInside(const Simulation& sim, const PairSummary& p) {
+RigidInside RigidBodyInside(const Simulation& sim, const PairSummary& p, const std::vector<MeshStats>& rest) {
   RigidInside out;
   const bool rigid_a = sim.engine().model(p.a).rigid, rigid_b = sim.engine().model(p.b).rigid;
   if (rigid_a == rigid_b) return out;
   const int body = rigid_a ? p.b : p.a, obstacle = rigid_a ? p.a : p.b;
   // out of the deformable body toward the rigid one: against the impulse the rigid one gave it
   const Vec3 toward = body == p.a ? Vec3(-p.direction) : p.direction;
-  const ObstacleInside deepest = DeepestObstacleVertexInside(sim, body, obstacle, toward);
+  const ObstacleInside deepest = DeepestObstacleVertexInside(sim, body, obstacle, toward, rest[body]);
   if (deepest.depth > sim.scenario().contact.toofar_maximum) out = {body, obstacle, deepest.vertex, deepest.depth};
   return out;
 }
@@ -169,9 +170,12 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                        "step unseen and the contact be missed; use at most %.3g s",
                        sc.bodies[g.fastest_a].name.c_str(), sc.bodies[g.fastest_b].name.c_str(),
                        g.relative_speed * sc.time_step, sc.contact.toofar_maximum, g.reach_step)});
+  // each body's rest mesh: its extent, and whether it is closed
+  std::vector<MeshStats> rest_stats;
+  for (int i = 0; i < sim.engine().body_count(); ++i) rest_stats.push_back(ComputeStats(sim.engine().model(i).mesh));
   for (int i = 0; i < sim.engine().body_count(); ++i) {
     // crush deeper than the body is long (x extent): the mesh was pushed through itself
-    const MeshStats rest = ComputeStats(sim.engine().model(i).mesh);
+    const MeshStats& rest = rest_stats[i];
     const double length = rest.max.x() - rest.min.x();
     if (s.bodies[i].max_crush > length)
       w->push_back({"crush_beyond_length", "bodies[" + std::to_string(i) + "]",
@@ -201,7 +205,7 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
   }
   for (const PairSummary& p : s.pairs) {
     // a rigid body that went deeper inside a deformable one than it crushed, past the search's reach
-    const RigidInside inside = RigidBodyInside(sim, p);
+    const RigidInside inside = RigidBodyInside(sim, p, rest_stats);
     if (inside.vertex >= 0)
       w->push_back({"obstacle_inside", "",
                     Text("\"%s\" (its vertex %d) went inside \"%s\" %.3g m deeper than \"%s\" was crushed there, "

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dymesh/core/geometry.h"
+#include "dymesh/core/mesh.h"
 
 /// Whether a rigid body went inside a deformable body, past what the contact search can reach.
 namespace dymesh {
@@ -22,11 +23,13 @@ struct ObstacleInside {
 /// spec §2-§5: a node is pushed out of the master, so where a rigid body came in the body's surface
 /// was crushed as deep as it came; a rigid body deeper than that went in between the nodes (the nodes
 /// slid aside, or never met it) and the contact no longer sees it once past TOOFAR_MAXIMUM. Judged
-/// for a closed `body` mesh only (a display mesh's panels and interior parts have no front and back
-/// to be inside), on the rigid body's vertices facing into the body along the line (one on its flank
-/// lies against the notch's walls), against the shallowest rest front and the deepest crush (the
-/// corners' deepest crush interpolated across each face) in the lateral cells round each vertex
-/// (the body's median edge, the vertex's cell and its eight neighbours).
-ObstacleInside DeepestObstacleVertexInside(const Simulation& sim, int body, int obstacle, const Vec3& toward_earth);
+/// for a closed `body` mesh only, as `rest` (its rest mesh's ComputeStats) says: a display mesh's
+/// panels and interior parts have no front and back to be inside. Judged on the rigid body's vertices
+/// facing into the body along the line (one on its flank lies against the notch's walls), against
+/// the shallowest rest front and the deepest crush (the corners' deepest crush interpolated across
+/// each face) in the lateral cells round each vertex (the body's median edge, the vertex's cell and
+/// its eight neighbours).
+ObstacleInside DeepestObstacleVertexInside(const Simulation& sim, int body, int obstacle, const Vec3& toward_earth,
+                                           const MeshStats& rest);
 
 }  // namespace dymesh
