@@ -33,7 +33,6 @@ struct ContactEngine::PassFrame {
   Vec3 t_slave_to_master;   // slave CG in the master frame
   std::vector<Vec3>* pending;  // [m] the slave's new Delta of the nodes that moved (n_vertices)
   double mu;                // contact friction coefficient of the pair
-  bool held;                // friction left the pair's slide under the null band in the last step
   Vec3 pushed;              // unit direction of the normal impulse on the slave so far (master frame), or zero
 
   Vec3 ToMaster(const Vec3& p_slave) const { return r_slave_to_master * p_slave + t_slave_to_master; }

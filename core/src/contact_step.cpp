@@ -170,7 +170,7 @@ StepResult ContactEngine::Step(double dt) {
       PassSums rigid_nodes;  // a rigid body's nodes pushing the faces they crossed
       auto run = [&](int pass, int master, bool stage) {
         const int slave = master == a ? b : a;
-        sums[pass] = RunPass(master, slave, stage, held != 0, &engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
+        sums[pass] = RunPass(master, slave, stage, &engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
       };
       if (models_[a]->rigid || models_[b]->rigid) {
         // a rigid body is always the master and takes none of the crush
@@ -198,7 +198,7 @@ StepResult ContactEngine::Step(double dt) {
       const Vec3 on_a = result.pairs.back().normal_force[0] * dt;
       pushed_[ab] += states_[b].rigid.Rotation().transpose() * on_a;
       pushed_[ba] -= states_[a].rigid.Rotation().transpose() * on_a;
-      held = LimitFriction(dt, &result.pairs.back()) ? 1 : 0;
+      PairFriction(sums, dt, &held, &result.pairs.back());
     }
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
@@ -290,7 +290,15 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   // locate, then restore and evaluate the node law
   const bool was_touching = engagement == Engagement::kTouching;
   Located hit;
-  const bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
+  bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
+  if (!found && was_touching && f.master_model->rigid && options_.search_direction == SearchDirection::kVelocity) {
+    const Vec3 inward = -(f.r_slave_to_master * f.slave->vertex_normal[v]);
+    const Vec3 reverse = -SearchLine(f, v, hit.rel_velocity, inward);
+    const Vec3 pressed_on = f.r_slave_to_master * f.slave->contact_normal[v];
+    Located again;
+    if (reverse.squaredNorm() > 0.0 && LocateNode(f, v, was_touching, &reverse, &out->scratch, &again) &&
+        again.normal.dot(pressed_on) > std::cos(1.0 * M_PI / 180.0)) { found = true; hit = again; }
+  }
   // spec §2 Location: against a rigid master (its surface does not move in its frame) a node in
   // contact entered through the face it is pressed on; the method's line can cross another face past
   // a corner (a pole's side, behind a node pressed on its front) and load the node sideways with its
@@ -351,33 +359,25 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   // normal force along the master surface normal: without friction there is no tangential force
   const Vec3 normal_earth = f.r_master * hit.normal;
   out->sums.normal.Add(node_force * normal_earth, arm_slave, arm_master);
-  // spec §7 SlaveNodeFriction: against the sliding on the master surface, mu times the normal force,
-  // none inside the friction null band while the pair slides; once friction has brought the slide
-  // under the band (or stopped it: static friction) it also holds the slower slip there, until it
-  // no longer can
-  const Vec3 v_rel = f.r_master * hit.rel_velocity;
-  const Vec3 v_slide = AlongSurface(v_rel, normal_earth);
-  const double slide = v_slide.norm();
-  if (f.mu > 0.0 && (slide > options_.friction_null_band || (f.held && slide > 0.0))) {
-    out->sums.friction.Add(-(f.mu * node_force / slide) * v_slide, arm_slave, arm_master);
-  }
+  // spec §7 SlaveNodeFriction acts here, mu times the normal force (its direction once the pair's
+  // normal loads are known: AddFriction)
+  if (f.mu > 0.0) out->friction_points.push_back({arm_slave, arm_master, normal_earth, f.mu * node_force});
 }
 
 ContactEngine::PassFrame ContactEngine::FrameOf(int master, int slave) {
   PassFrame f{models_[master].get(), models_[slave].get(), &states_[master], &states_[slave],
               locators_[master].get(), states_[master].rigid.Rotation(), states_[slave].rigid.Rotation(),
               Mat3::Identity(), Vec3::Zero(), &pending_delta_[slave],
-              0.5 * (models_[master]->friction + models_[slave]->friction), false,
+              0.5 * (models_[master]->friction + models_[slave]->friction),
               pushed_[static_cast<size_t>(slave) * body_count() + master].normalized()};
   f.r_slave_to_master = f.r_master.transpose() * f.r_slave;
   f.t_slave_to_master = f.r_master.transpose() * (f.slave->rigid.position - f.master->rigid.position);
   return f;
 }
 
-ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage, bool held,
-                                              EngagedNodes* engaged, double dt, ContactDiagnostics* diag) {
-  PassFrame f = FrameOf(master, slave);
-  f.held = held;
+ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage, EngagedNodes* engaged, double dt,
+                                              ContactDiagnostics* diag) {
+  const PassFrame f = FrameOf(master, slave);
 
   const std::vector<int> candidates = CullCandidates(f, master, slave, *engaged);
   diag->candidates += static_cast<long long>(candidates.size());
@@ -407,7 +407,7 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
   for (std::size_t c = 0; c < ChunkCount(candidates.size()); ++c) {
     const ChunkSums& part = chunks_[c];
     sums.normal += part.sums.normal;
-    sums.friction += part.sums.friction;
+    sums.friction_points.insert(sums.friction_points.end(), part.friction_points.begin(), part.friction_points.end());
     sums.touching_area += part.sums.touching_area;
     sums.law_energy += part.sums.law_energy;
     diag->Add(part.diag);
@@ -442,31 +442,35 @@ void ContactEngine::CommitPending(int body) {
   moved_[body].clear();
 }
 
+std::vector<double> ContactEngine::PassWeights(const std::vector<PassSums>& sums) {
+  // each pass estimates the whole interface load from its slave's nodes; estimates are weighted by
+  // the contact area the slave saw, so a side whose mesh cannot resolve the contact counts less
+  double area = 0.0;
+  for (const PassSums& p : sums) area += p.touching_area;
+  std::vector<double> weights(sums.size(), 0.0);
+  if (area <= 0.0) return weights;
+  for (std::size_t i = 0; i < sums.size(); ++i) weights[i] = sums[i].touching_area / area;
+  return weights;
+}
+
 PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>& sums,
                                        const PassSums& rigid_nodes) const {
   PairLoads out;
   out.body[0] = a;
   out.body[1] = b;
-  // each pass estimates the whole interface load from its slave's nodes; estimates are weighted by
-  // the contact area the slave saw, so a side whose mesh cannot resolve the contact counts less
-  double area = 0.0;
+  const std::vector<double> weights = PassWeights(sums);
   int slave_passes[2] = {0, 0};
-  for (const PassSums& p : sums) area += p.touching_area;
-  for (const PassSums& p : sums) {
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    const PassSums& p = sums[i];
     const int ks = p.slave == a ? 0 : 1, km = 1 - ks;
     out.law_energy[ks] += p.law_energy;
     out.contact_area[ks] += p.touching_area;
     ++slave_passes[ks];
-    if (area <= 0.0) continue;
-    const double w = p.touching_area / area;
+    const double w = weights[i];
     out.normal_force[ks] += w * p.normal.force_slave;
     out.normal_moment[ks] += w * p.normal.moment_slave;
     out.normal_force[km] -= w * p.normal.force_slave;
     out.normal_moment[km] += w * p.normal.moment_master;
-    out.friction_force[ks] += w * p.friction.force_slave;
-    out.friction_moment[ks] += w * p.friction.moment_slave;
-    out.friction_force[km] -= w * p.friction.force_slave;
-    out.friction_moment[km] += w * p.friction.moment_master;
   }
   // a rigid body's nodes loaded faces no pass's nodes held: their loads add whole; the node-law work
   // is on the deformable side (the master of those pushes)
@@ -480,42 +484,6 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
   for (int k = 0; k < 2; ++k)
     if (slave_passes[k] > 0) out.contact_area[k] /= slave_passes[k];
   return out;
-}
-
-bool ContactEngine::LimitFriction(double dt, PairLoads* p) const {
-  // spec §7 friction is Coulomb's: mu N while sliding, but never more than stops the slide within
-  // the step (mu N held over a whole step can reverse a slow slide: friction pushing the bodies the
-  // other way). The friction wrench's power on the step-start motion, against the power it adds to
-  // it over dt (the bodies' inverse masses as the host moves them), gives the largest scale that
-  // brings the motion it opposes to rest and not beyond
-  double power = 0.0, gain = 0.0;  // [W]
-  for (int k = 0; k < 2; ++k) {
-    const int body = p->body[k];
-    const RigidState& r = states_[body].rigid;
-    power += p->friction_force[k].dot(r.velocity) + p->friction_moment[k].dot(r.Rotation() * r.omega);
-    gain += dt * LoadPowerGain(*models_[body], motions_[body], r, p->friction_force[k], p->friction_moment[k]);
-  }
-  if (power >= 0.0) {
-    // friction that would drive the bodies' relative motion, not resist it (held slips too slow to
-    // point one way): none
-    for (int k = 0; k < 2; ++k) {
-      p->friction_force[k] = Vec3::Zero();
-      p->friction_moment[k] = Vec3::Zero();
-    }
-    return false;
-  }
-  if (gain <= -power) {
-    // sliding on through the step, mu N throughout; the slide it leaves, as a friction-weighted speed
-    // [m/s], is held below the null band in the next step too
-    const double force = p->friction_force[0].norm();
-    return force > 0.0 && (-power - gain) / force < options_.friction_null_band;
-  }
-  const double scale = -power / gain;
-  for (int k = 0; k < 2; ++k) {
-    p->friction_force[k] *= scale;
-    p->friction_moment[k] *= scale;
-  }
-  return true;
 }
 
 bool ContactEngine::ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p,

@@ -114,15 +114,16 @@ TEST(Determinism, BarrierAtAnyThreadCount) {
 }
 
 TEST(Determinism, CarToCarRealMeshesAtAnyThreadCount) {
-  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0x04012d18d8a60eb3ull);
+  ExpectThreadCountIndependent(CarToCar(0, 0.12), 0xdd616fa47f0b30c8ull);
 }
 
 TEST(Determinism, HighPolygonCarToCarAtAnyThreadCount) {
   // about 137k and 72k triangles (two 1-to-4 subdivisions), the first 30 ms of the pulse (hash
   // renewed in the 16th session: the node area counts only the part of a face in contact; and on
   // 2026-11-26 with the car-to-car one: nodes pressed on a deformable master keep to faces turned
-  // like the one they were pressed on)
-  ExpectThreadCountIndependent(CarToCar(2, 0.03), 0x798bf5e00b324e58ull);
+  // like the one they were pressed on; in the 43rd session with the car-to-car one: friction reads the
+  // slide the step would leave under the normal loads)
+  ExpectThreadCountIndependent(CarToCar(2, 0.03), 0x006f4a60592be686ull);
 }
 
 }  // namespace

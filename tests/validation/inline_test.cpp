@@ -151,12 +151,14 @@ RearEnd RunRearEnd(const std::string& label, const std::string& json, int p406_s
 // closure equals the two deepest crushes, which lie opposite each other on the line of centres; 10 %
 // of the closure covers nodes of the two meshes not exactly opposite (faces of 1-3 in at the
 // bumpers). The ledger balances within 2 % (the issue's bar). Held over dt/2, 3 and 4 passes, the
-// polygon-normal search, the p406's mesh 1:4, the body order and a frame turned 30 degrees. The
-// local-average-normal search closes 35 % more than it crushes (39.2 against 29.0 in), a known limit
-// in the README held over the bar here; 3 passes closed 21 % more (36.8 against 29.2 in) until nodes
-// pressed on a deformable master kept to faces turned like the one they were pressed on (2026-11-26).
-// The bar is not robust: nudging the default by 0.5 mph or 4 % of its step gives 4-16 % (before the node area
-// counted only the faces' part in contact: -8 to 22 %; that default gave -8 %). Until nodes pressed on a deformable master stopped unloading
+// polygon-normal search, the p406's mesh 1:4, the body order and a frame turned 30 degrees, each as the
+// mean over five steps 0.96-1.04 times its own: a single run is a draw from a spread of about 14 % of
+// the closure (the default's five: -0.1 to +13.6 %; before the friction read the slide at the step's
+// end, nudging the default by 0.5 mph or 4 % of its step gave 4-16 %, and the single default run, +11.4 %
+// since, had passed). The local-average-normal search closes 25 % more than it crushes (38.1 against
+// 28.6 in), a known limit in the README held over the bar here; 3 passes closed 21 % more (36.8 against
+// 29.2 in) until nodes pressed on a deformable master kept to faces turned like the one they were
+// pressed on (2026-11-26). Until nodes pressed on a deformable master stopped unloading
 // when a gap opened in front of them while the bodies still closed, the default closed 47.8 in for
 // 18.8 + 9.9 in of crush: display-mesh nodes that lost their face sprang back onto the weak rebound
 // curve and sank into the other car.
@@ -167,37 +169,47 @@ RearEnd RunRearEnd(const std::string& label, const std::string& json, int p406_s
 // 2026-11-26); the same nudges gave 9-31 %, then 21-41 %. Held over the bar, to be dropped when it is met
 TEST(Inline, RealCarMeshesCloseOnlyAsFarAsTheyCrush) {
   const std::string two = R"("passes_per_step": 2)";
-  auto run = [](const std::string& label, const std::string& json, int p406_subdivisions = 0) {
-    return std::pair<std::string, RearEnd>{label, RunRearEnd(label, json, p406_subdivisions)};
+  // each variant over five steps 0.96-1.04 times its own: one run is a draw from that spread
+  auto band = [](const std::string& label, const std::string& contact, double step, bool stock_first, double angle = 0,
+                 int p406_subdivisions = 0) {
+    std::vector<RearEnd> runs;
+    for (double nudge : {0.96, 0.98, 1.0, 1.02, 1.04})
+      runs.push_back(RunRearEnd(label, RearEndJson(angle, contact, step * nudge, stock_first), p406_subdivisions));
+    return std::pair<std::string, std::vector<RearEnd>>{label, runs};
   };
-  const std::vector<std::pair<std::string, RearEnd>> runs = {
-      run("default", RearEndJson(0, two, 0.0005, false)),
-      run("dt/2", RearEndJson(0, two, 0.00025, false)),
-      run("3 passes", RearEndJson(0, R"("passes_per_step": 3)", 0.0005, false)),
-      run("4 passes", RearEndJson(0, R"("passes_per_step": 4)", 0.0005, false)),
-      run("local average normal",
-          RearEndJson(0, two + R"(, "search_direction": "local_average_normal")", 0.0005, false)),
-      run("polygon normal", RearEndJson(0, two + R"(, "search_direction": "poly_normal")", 0.0005, false)),
-      run("p406 mesh 1:4", RearEndJson(0, two, 0.0005, false), 1),
-      run("stock car listed first", RearEndJson(0, two, 0.0005, true)),
-      run("frame turned 30 deg", RearEndJson(30, two, 0.0005, false)),
+  const std::vector<std::pair<std::string, std::vector<RearEnd>>> bands = {
+      band("default", two, 0.0005, false),
+      band("dt/2", two, 0.00025, false),
+      band("3 passes", R"("passes_per_step": 3)", 0.0005, false),
+      band("4 passes", R"("passes_per_step": 4)", 0.0005, false),
+      band("local average normal", two + R"(, "search_direction": "local_average_normal")", 0.0005, false),
+      band("polygon normal", two + R"(, "search_direction": "poly_normal")", 0.0005, false),
+      band("p406 mesh 1:4", two, 0.0005, false, 0, 1),
+      band("stock car listed first", two, 0.0005, true),
+      band("frame turned 30 deg", two, 0.0005, false, 30),
   };
-  for (const auto& [label, r] : runs) {
-    const double crush = r.c_p406 + r.c_stock;
-    EXPECT_GT(r.closure, 10.0) << label;  // a real crush [in]
-    if (label == "local average normal") {
-      EXPECT_GT(std::abs(r.closure - crush), 0.1 * r.closure) << label << ": now within the bar; drop the exception";
-    } else {
-      EXPECT_NEAR(r.closure, crush, 0.1 * r.closure) << label;
+  for (const auto& [label, runs] : bands) {
+    double closure = 0.0, crush = 0.0;
+    for (const RearEnd& r : runs) {
+      closure += r.closure / runs.size();
+      crush += (r.c_p406 + r.c_stock) / runs.size();
+      EXPECT_GT(r.closure, 10.0) << label;  // a real crush [in]
+      EXPECT_NEAR(r.balance, 0.0, 0.02) << label;
+      // the cars close at 30 mph in the plane they move in: the pair's speeds are taken along its
+      // normal impulse in that plane (the faces' vertical tilt, 14 deg here, read 29.05 mph before:
+      // planar cars cannot take a vertical load); 0.5 % leaves the normal impulse a sideways tilt of
+      // 5.7 deg (the searches meet the curved bumpers on different faces: 4 deg with the polygon normal)
+      EXPECT_NEAR(r.closing_mph, 30.0, 0.005 * 30.0) << label;
     }
-    EXPECT_NEAR(r.balance, 0.0, 0.02) << label;
-    // the cars close at 30 mph in the plane they move in: the pair's speeds are taken along its
-    // normal impulse in that plane (the faces' vertical tilt, 14 deg here, read 29.05 mph before:
-    // planar cars cannot take a vertical load); 0.5 % leaves the normal impulse a sideways tilt of
-    // 5.7 deg (the searches meet the curved bumpers on different faces: 4 deg with the polygon normal)
-    EXPECT_NEAR(r.closing_mph, 30.0, 0.005 * 30.0) << label;
+    if (label == "local average normal") {
+      EXPECT_GT(std::abs(closure - crush), 0.1 * closure) << label << ": now within the bar; drop the exception";
+    } else {
+      EXPECT_NEAR(closure, crush, 0.1 * closure) << label;
+    }
+    std::printf("[measured] rear-end, real meshes, %s, 5 steps: closure %.2f in, crush %.2f in (%+.1f %%)\n",
+                label.c_str(), closure, crush, 100 * (closure - crush) / closure);
   }
-  const RearEnd& base = runs.front().second;
+  const RearEnd& base = bands.front().second[2];
   EXPECT_GT(base.c_p406 - base.share_p406, 0.15 * base.share_p406) << "now within the bar; drop the exception";
 }
 

@@ -101,21 +101,31 @@ class ContactEngine {
     void Add(const Vec3& force, const Vec3& arm_slave, const Vec3& arm_master);
     void operator+=(const Wrench& o);
   };
-  // one pass's sums: normal and friction loads of its slave's nodes
+  // a touching slave node where friction acts (spec §7): the point both bodies are loaded at, the
+  // master's outward normal there and mu times the node's normal force, earth frame
+  struct FrictionPoint {
+    Vec3 arm_slave, arm_master;  // [m] from each body's CG
+    Vec3 normal;
+    double limit = 0.0;  // [N]
+  };
+  // one pass's sums: normal loads of its slave's nodes, and where friction acts
   struct PassSums {
     int master = 0, slave = 0;
-    Wrench normal, friction;
+    Wrench normal;
     double touching_area = 0.0;   // [m^2] of slave nodes carrying force
     double law_energy = 0.0;      // [J] node-law work on the slave's nodes
+    std::vector<FrictionPoint> friction_points;  // ascending node order
   };
   // what one chunk of slave nodes produced (folded in chunk order); buffers reused across passes
   struct ChunkSums {
     PassSums sums;
     ContactDiagnostics diag;
     std::vector<int> touching, holding, located, moved;  // ascending node indices
+    std::vector<FrictionPoint> friction_points;          // ascending node order
     std::vector<Candidate> scratch;                      // candidate triangles of one node
     void Clear() {
       sums = PassSums{};
+      friction_points.clear();
       diag = ContactDiagnostics{};
       touching.clear();
       holding.clear();
@@ -132,19 +142,32 @@ class ContactEngine {
   struct EngagedNodes {
     std::vector<int> touching, holding, located;
   };
-  // the frame of a pass of `slave`'s nodes against `master` (held: false)
+  // the frame of a pass of `slave`'s nodes against `master`
   PassFrame FrameOf(int master, int slave);
-  PassSums RunPass(int master, int slave, bool stage, bool held, EngagedNodes* engaged, double dt,
-                   ContactDiagnostics* diag);
+  PassSums RunPass(int master, int slave, bool stage, EngagedNodes* engaged, double dt, ContactDiagnostics* diag);
   std::vector<int> CullCandidates(const PassFrame& f, int master, int slave, const EngagedNodes& engaged);
   // writes slave node v's own state (through RestoreNode), its contact normal and its pending Delta
   // (f.pending[v]); nothing of any other node (the parallel loop relies on it), sums into *out
   void ProcessNode(const PassFrame& f, int v, Engagement engagement, double dt, ChunkSums* out);
-  // spec §7 Coulomb bounds on the pair's friction; true when it leaves the slide under the null band
-  // (held in the next step)
-  bool LimitFriction(double dt, PairLoads* pair) const;
-  // the passes' estimates of the interface load, plus the rigid nodes' pushes whole
+  // the passes' estimates of the interface's normal load, plus the rigid nodes' pushes whole
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums, const PassSums& rigid_nodes) const;
+  // each pass's weight in the pair's estimate: the share of the contact area its slave saw
+  static std::vector<double> PassWeights(const std::vector<PassSums>& sums);
+  // spec §7 the pair's friction (contact_friction.cpp): at its passes' friction points, weighted like
+  // its normal load, with the null band and Coulomb's bound; *held: the last step left the slide
+  // under the band, and on return whether this one does
+  void PairFriction(const std::vector<PassSums>& sums, double dt, char* held, PairLoads* pair) const;
+  // the pair's two bodies moved over dt by its normal loads alone
+  std::array<RigidState, 2> TrialMotion(const PairLoads& pair, double dt) const;
+  // adds the friction of the points that slide faster than `min_slide` [m/s] on the trial motion;
+  // returns their sum of mu N [N]
+  double AddFriction(const std::vector<PassSums>& sums, const std::array<RigidState, 2>& trial, double min_slide,
+                     PairLoads* pair) const;
+  // the power of the pair's friction on the trial motion [W]
+  double FrictionPower(const PairLoads& pair, const std::array<RigidState, 2>& trial) const;
+  // Coulomb's bound: never more than stops the slide; true when the friction leaves the slide under
+  // the band (held in the next step)
+  bool LimitFriction(double dt, double magnitude, const std::array<RigidState, 2>& trial, PairLoads* pair) const;
   Vec3 SearchLine(const PassFrame& f, int v, const Vec3& v_rel, const Vec3& inward) const;
   // `along`: a search direction (master frame) instead of the method's, or null
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,

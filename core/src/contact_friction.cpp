@@ -1,0 +1,115 @@
+// spec §7 friction of a pair in contact: mu N at each touching node against the slide the step would
+// leave, the pair's null band, and Coulomb's bound (never more than stops the slide).
+#include <array>
+#include <vector>
+
+#include "dymesh/core/contact_step.h"
+
+namespace dymesh {
+
+std::array<RigidState, 2> ContactEngine::TrialMotion(const PairLoads& p, double dt) const {
+  // the host's own step under the pair's normal loads alone
+  std::array<RigidState, 2> trial;
+  for (int k = 0; k < 2; ++k) {
+    const int body = p.body[k];
+    trial[k] = states_[body].rigid;
+    IntegrateRigidBody(*models_[body], motions_[body], p.normal_force[k],
+                       trial[k].Rotation().transpose() * p.normal_moment[k], dt, &trial[k]);
+  }
+  return trial;
+}
+
+double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::array<RigidState, 2>& trial,
+                                  double min_slide, PairLoads* p) const {
+  // spec §7 SlaveNodeFriction against the slide at the end of the step, not at its start: a slide
+  // friction stopped in the last step starts this one at rest, pointing nowhere, while the normal
+  // loads drive it again (read at the step's start, friction held the offset pole's slide every
+  // other step: mu N, then 6 lbf). Both bodies' rates in the earth frame of the step's start, where
+  // the points are
+  Vec3 velocity[2], spin[2];
+  for (int k = 0; k < 2; ++k) {
+    velocity[k] = trial[k].velocity;
+    spin[k] = states_[p->body[k]].rigid.Rotation() * trial[k].omega;
+  }
+  const std::vector<double> weights = PassWeights(sums);
+  double magnitude = 0.0;  // [N]
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    const int ks = sums[i].slave == p->body[0] ? 0 : 1, km = 1 - ks;
+    Wrench friction;
+    double limits = 0.0;
+    // determinism: the pass's points in node order
+    for (const FrictionPoint& q : sums[i].friction_points) {
+      const Vec3 v_rel = velocity[ks] + spin[ks].cross(q.arm_slave) - velocity[km] - spin[km].cross(q.arm_master);
+      const Vec3 v_slide = AlongSurface(v_rel, q.normal);
+      const double slide = v_slide.norm();
+      if (slide <= min_slide) continue;
+      friction.Add(-(q.limit / slide) * v_slide, q.arm_slave, q.arm_master);
+      limits += q.limit;
+    }
+    const double w = weights[i];
+    p->friction_force[ks] += w * friction.force_slave;
+    p->friction_moment[ks] += w * friction.moment_slave;
+    p->friction_force[km] -= w * friction.force_slave;
+    p->friction_moment[km] += w * friction.moment_master;
+    magnitude += w * limits;
+  }
+  return magnitude;
+}
+
+double ContactEngine::FrictionPower(const PairLoads& p, const std::array<RigidState, 2>& trial) const {
+  double power = 0.0;  // [W]
+  for (int k = 0; k < 2; ++k) {
+    const Mat3 r = states_[p.body[k]].rigid.Rotation();
+    power += p.friction_force[k].dot(trial[k].velocity) + p.friction_moment[k].dot(r * trial[k].omega);
+  }
+  return power;
+}
+
+void ContactEngine::PairFriction(const std::vector<PassSums>& sums, double dt, char* held, PairLoads* p) const {
+  // spec §7 friction against the slide the step would leave under the normal loads
+  const std::array<RigidState, 2> trial = TrialMotion(*p, dt);
+  double magnitude = AddFriction(sums, trial, 0.0, p);
+  // spec §7 null band: the pair slides if its points' slides, weighted by their friction (-power /
+  // sum of mu N), exceed it; then, or while a slide friction brought under it (or stopped) is held
+  // there (static friction), every sliding point takes friction. Otherwise only points sliding past
+  // the band do. (Read only point by point, the band switched friction off for single steps when a
+  // slide hovered at it: the points' slides just under it, their weighted mean just over)
+  const bool slides = magnitude > 0.0 && -FrictionPower(*p, trial) / magnitude > options_.friction_null_band;
+  if (!slides && !*held) {
+    for (int k = 0; k < 2; ++k) p->friction_force[k] = p->friction_moment[k] = Vec3::Zero();
+    magnitude = AddFriction(sums, trial, options_.friction_null_band, p);
+  }
+  *held = LimitFriction(dt, magnitude, trial, p) ? 1 : 0;
+}
+
+bool ContactEngine::LimitFriction(double dt, double magnitude, const std::array<RigidState, 2>& trial,
+                                  PairLoads* p) const {
+  // spec §7 friction is Coulomb's: mu N while sliding, but never more than stops the slide within
+  // the step (mu N held over a whole step can reverse a slow slide: friction pushing the bodies the
+  // other way). The friction wrench's power on the trial motion (the end of the step without it),
+  // against the power it adds to it over dt (the bodies' inverse masses as the host moves them),
+  // gives the largest scale that brings the motion it opposes to rest and not beyond
+  const double power = FrictionPower(*p, trial);  // [W]
+  double gain = 0.0;                              // [W]
+  for (int k = 0; k < 2; ++k) {
+    const int body = p->body[k];
+    gain += dt * LoadPowerGain(*models_[body], motions_[body], states_[body].rigid, p->friction_force[k],
+                               p->friction_moment[k]);
+  }
+  if (power >= 0.0) {
+    // friction that would drive the relative motion, not resist it (held slips too slow to point one
+    // way): none
+    for (int k = 0; k < 2; ++k) p->friction_force[k] = p->friction_moment[k] = Vec3::Zero();
+    return false;
+  }
+  // sliding on through the step, mu N throughout: held next if the slide it leaves is under the band
+  if (gain <= -power) return (-power - gain) / magnitude < options_.friction_null_band;
+  const double scale = -power / gain;
+  for (int k = 0; k < 2; ++k) {
+    p->friction_force[k] *= scale;
+    p->friction_moment[k] *= scale;
+  }
+  return true;
+}
+
+}  // namespace dymesh
