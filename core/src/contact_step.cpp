@@ -25,6 +25,10 @@ void RequireFiniteState(const RigidState& r, int body) {
 constexpr double kMinFacing = 1e-9;
 // [m/s] relative speed below which the velocity search direction falls back to the local normal
 constexpr double kStillSpeed = 1e-9;
+// cosine of 1 deg: a face this close in direction to the one a node was pressed on is on its plane
+// (the velocity search's look back: without it the centred frictionless pole let the car on, 11.7 mph
+// of 20 by 0.7 s)
+const double kSamePlane = std::cos(1.0 * M_PI / 180.0);
 
 // a host's body index must name a body
 void RequireBodyIndex(int i, int count, const char* call) {
@@ -291,13 +295,20 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   const bool was_touching = engagement == Engagement::kTouching;
   Located hit;
   bool found = LocateNode(f, v, was_touching, nullptr, &out->scratch, &hit);
+  // spec §2 Location, velocity search: a node in contact with a rigid master whose line found nothing
+  // also looks along the line turned the other way, for a face on the plane it was pressed on. The
+  // line is turned to point into the slave by the node's own normal, which on a yawing body's
+  // unevenly crushed front tilts past the motion and turned it out of the wall: the eccentric box lost
+  // its rebound (impact-point restitution 0.035 for 0.3)
   if (!found && was_touching && f.master_model->rigid && options_.search_direction == SearchDirection::kVelocity) {
-    const Vec3 inward = -(f.r_slave_to_master * f.slave->vertex_normal[v]);
-    const Vec3 reverse = -SearchLine(f, v, hit.rel_velocity, inward);
+    const Vec3 reverse = -SearchLine(f, v, hit.rel_velocity, -(f.r_slave_to_master * f.slave->vertex_normal[v]));
     const Vec3 pressed_on = f.r_slave_to_master * f.slave->contact_normal[v];
     Located again;
     if (reverse.squaredNorm() > 0.0 && LocateNode(f, v, was_touching, &reverse, &out->scratch, &again) &&
-        again.normal.dot(pressed_on) > std::cos(1.0 * M_PI / 180.0)) { found = true; hit = again; }
+        again.normal.dot(pressed_on) > kSamePlane) {
+      found = true;
+      hit = again;
+    }
   }
   // spec §2 Location: against a rigid master (its surface does not move in its frame) a node in
   // contact entered through the face it is pressed on; the method's line can cross another face past
