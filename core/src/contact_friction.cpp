@@ -19,8 +19,8 @@ std::array<RigidState, 2> ContactEngine::TrialMotion(const PairLoads& p, double 
   return trial;
 }
 
-double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::array<RigidState, 2>& trial,
-                                  double min_slide, PairLoads* p) const {
+double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights,
+                                  const std::array<RigidState, 2>& trial, double min_slide, PairLoads* p) const {
   // spec §7 SlaveNodeFriction against the slide at the end of the step, not at its start: a slide
   // friction stopped in the last step starts this one at rest, pointing nowhere, while the normal
   // loads drive it again (read at the step's start, friction held the offset pole's slide every
@@ -31,7 +31,6 @@ double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::
     velocity[k] = trial[k].velocity;
     spin[k] = states_[p->body[k]].rigid.Rotation() * trial[k].omega;
   }
-  const std::vector<double> weights = PassWeights(sums);
   double magnitude = 0.0;  // [N]
   for (std::size_t i = 0; i < sums.size(); ++i) {
     const int ks = sums[i].slave == p->body[0] ? 0 : 1, km = 1 - ks;
@@ -65,10 +64,11 @@ double ContactEngine::FrictionPower(const PairLoads& p, const std::array<RigidSt
   return power;
 }
 
-void ContactEngine::PairFriction(const std::vector<PassSums>& sums, double dt, char* held, PairLoads* p) const {
+void ContactEngine::PairFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights, double dt,
+                                 char* held, PairLoads* p) const {
   // spec §7 friction against the slide the step would leave under the normal loads
   const std::array<RigidState, 2> trial = TrialMotion(*p, dt);
-  double magnitude = AddFriction(sums, trial, 0.0, p);
+  double magnitude = AddFriction(sums, weights, trial, 0.0, p);
   // spec §7 null band: the pair slides if its points' slides, weighted by their friction (-power /
   // sum of mu N), exceed it; then, or while a slide friction brought under it (or stopped) is held
   // there (static friction), every sliding point takes friction. Otherwise only points sliding past
@@ -77,7 +77,7 @@ void ContactEngine::PairFriction(const std::vector<PassSums>& sums, double dt, c
   const bool slides = magnitude > 0.0 && -FrictionPower(*p, trial) / magnitude > options_.friction_null_band;
   if (!slides && !*held) {
     for (int k = 0; k < 2; ++k) p->friction_force[k] = p->friction_moment[k] = Vec3::Zero();
-    magnitude = AddFriction(sums, trial, options_.friction_null_band, p);
+    magnitude = AddFriction(sums, weights, trial, options_.friction_null_band, p);
   }
   *held = LimitFriction(dt, magnitude, trial, p) ? 1 : 0;
 }

@@ -197,12 +197,13 @@ StepResult ContactEngine::Step(double dt) {
         // an odd last pass: one side, alternating between steps (its master's share waits for the next)
         if (pass < passes) run(pass, step_index_ % 2 == 0 ? b : a, false);
       }
-      result.pairs.push_back(CombinePasses(a, b, sums, rigid_nodes));
+      const std::vector<double> weights = PassWeights(sums);
+      result.pairs.push_back(CombinePasses(a, b, sums, weights, rigid_nodes));
       // the pair's normal impulse, each side in the other's frame
       const Vec3 on_a = result.pairs.back().normal_force[0] * dt;
       pushed_[ab] += states_[b].rigid.Rotation().transpose() * on_a;
       pushed_[ba] -= states_[a].rigid.Rotation().transpose() * on_a;
-      PairFriction(sums, dt, &held, &result.pairs.back());
+      PairFriction(sums, weights, dt, &held, &result.pairs.back());
     }
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
@@ -465,11 +466,10 @@ std::vector<double> ContactEngine::PassWeights(const std::vector<PassSums>& sums
 }
 
 PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>& sums,
-                                       const PassSums& rigid_nodes) const {
+                                       const std::vector<double>& weights, const PassSums& rigid_nodes) const {
   PairLoads out;
   out.body[0] = a;
   out.body[1] = b;
-  const std::vector<double> weights = PassWeights(sums);
   int slave_passes[2] = {0, 0};
   for (std::size_t i = 0; i < sums.size(); ++i) {
     const PassSums& p = sums[i];

@@ -149,20 +149,22 @@ class ContactEngine {
   // writes slave node v's own state (through RestoreNode), its contact normal and its pending Delta
   // (f.pending[v]); nothing of any other node (the parallel loop relies on it), sums into *out
   void ProcessNode(const PassFrame& f, int v, Engagement engagement, double dt, ChunkSums* out);
-  // the passes' estimates of the interface's normal load, plus the rigid nodes' pushes whole
-  PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums, const PassSums& rigid_nodes) const;
   // each pass's weight in the pair's estimate: the share of the contact area its slave saw
   static std::vector<double> PassWeights(const std::vector<PassSums>& sums);
+  // the passes' estimates of the interface's normal load, plus the rigid nodes' pushes whole
+  PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums, const std::vector<double>& weights,
+                          const PassSums& rigid_nodes) const;
   // spec §7 the pair's friction (contact_friction.cpp): at its passes' friction points, weighted like
   // its normal load, with the null band and Coulomb's bound; *held: the last step left the slide
   // under the band, and on return whether this one does
-  void PairFriction(const std::vector<PassSums>& sums, double dt, char* held, PairLoads* pair) const;
+  void PairFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights, double dt, char* held,
+                    PairLoads* pair) const;
   // the pair's two bodies moved over dt by its normal loads alone
   std::array<RigidState, 2> TrialMotion(const PairLoads& pair, double dt) const;
   // adds the friction of the points that slide faster than `min_slide` [m/s] on the trial motion;
   // returns their sum of mu N [N]
-  double AddFriction(const std::vector<PassSums>& sums, const std::array<RigidState, 2>& trial, double min_slide,
-                     PairLoads* pair) const;
+  double AddFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights,
+                     const std::array<RigidState, 2>& trial, double min_slide, PairLoads* pair) const;
   // the power of the pair's friction on the trial motion [W]
   double FrictionPower(const PairLoads& pair, const std::array<RigidState, 2>& trial) const;
   // Coulomb's bound: never more than stops the slide; true when the friction leaves the slide under
