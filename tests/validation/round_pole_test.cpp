@@ -287,7 +287,7 @@ double ColumnClosedFormCrushIn() {
 // shadow over 6 and 4 node columns), at dt to dt/4, centred or 1.5 in off, and for every search, stop
 // rule, pass count, body order and frame (measured 2026-11-26: -2.0 to +7.6 %, the 3 in cells the high
 // end; 1.5 in cells -2.8 %).
-// Friction stiffens the flanks (mu 0.5: -10 %, mu 0.8: -15 %, mu 0.1: +4-14 %, README); 6 in cells, two
+// Friction stiffens the flanks (mu 0.5: -10 %, mu 0.8: -13 to -15 %, mu 0.1: +4-14 %, README); 6 in cells, two
 // node columns across the pole, let it through between them (marked, README)
 TEST(RoundPole, BoxCrushFollowsTheColumnClosedForm) {
   const double closed = ColumnClosedFormCrushIn();
