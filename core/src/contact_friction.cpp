@@ -6,6 +6,14 @@
 #include "dymesh/core/contact_step.h"
 
 namespace dymesh {
+namespace {
+
+// no friction on either body of the pair
+void ClearFriction(PairLoads* p) {
+  for (int k = 0; k < 2; ++k) p->friction_force[k] = p->friction_moment[k] = Vec3::Zero();
+}
+
+}  // namespace
 
 std::array<RigidState, 2> ContactEngine::TrialMotion(const PairLoads& p, double dt) const {
   // the host's own step under the pair's normal loads alone
@@ -76,7 +84,7 @@ void ContactEngine::PairFriction(const std::vector<PassSums>& sums, const std::v
   // slide hovered at it: the points' slides just under it, their weighted mean just over)
   const bool slides = magnitude > 0.0 && -FrictionPower(*p, trial) / magnitude > options_.friction_null_band;
   if (!slides && !*held) {
-    for (int k = 0; k < 2; ++k) p->friction_force[k] = p->friction_moment[k] = Vec3::Zero();
+    ClearFriction(p);
     magnitude = AddFriction(sums, weights, trial, options_.friction_null_band, p);
   }
   *held = LimitFriction(dt, magnitude, trial, p) ? 1 : 0;
@@ -99,7 +107,7 @@ bool ContactEngine::LimitFriction(double dt, double magnitude, const std::array<
   if (power >= 0.0) {
     // friction that would drive the relative motion, not resist it (held slips too slow to point one
     // way): none
-    for (int k = 0; k < 2; ++k) p->friction_force[k] = p->friction_moment[k] = Vec3::Zero();
+    ClearFriction(p);
     return false;
   }
   // sliding on through the step, mu N throughout: held next if the slide it leaves is under the band

@@ -199,18 +199,38 @@ TEST(RoundPole, CrushDeeperThanThePoleCameIsMarked) {
   EXPECT_FALSE(WarningVoidsResults("crush_beyond_reach"));
 }
 
-// a 3000 lb box (3 in cells) at 20 mph into the 12 in round pole 15 in off its axis, mu 0.3
-Scenario BoxIntoOffsetPole(const std::string& search_direction) {
-  return ParseScenario(R"({"units": "US", "time": {"step": 0.0005, "duration": 1.5, "stop_at_separation": true},
-    "contact": {"passes_per_step": 2, "search_direction": ")" + search_direction + R"("},
+// a 3000 lb box 180 x 66 x 30 in (A 300 lb/in, B 100 lb/in^2 over 30 in, e 0), its front in `cell` in
+// cells, into a fixed 12 in round pole (32 facets) `offset` in off its axis, friction mu on both
+struct BoxPole {
+  int cell = 3;              // [in]
+  double speed = 10.0;       // [mph]
+  double offset = 0.0;       // [in]
+  double mu = 0.3;
+  double duration = 1.0;     // [s]
+  std::string search = "velocity";
+};
+
+Scenario BoxIntoPole(const BoxPole& c) {
+  const std::string segments = "[18, " + std::to_string(66 / c.cell) + ", " + std::to_string(30 / c.cell) + "]";
+  const std::string friction = std::to_string(c.mu);
+  return ParseScenario(R"({"units": "US", "time": {"step": 0.0005, "duration": )" + std::to_string(c.duration) +
+                           R"(, "stop_at_separation": true},
+    "contact": {"passes_per_step": 2, "search_direction": ")" + c.search + R"("},
     "bodies": [
-      {"name": "box", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [18, 22, 10]}},
-       "weight": 3000, "restitution": 0, "friction": 0.3, "motion": "planar",
+      {"name": "box", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": )" + segments + R"(}},
+       "weight": 3000, "restitution": 0, "friction": )" + friction + R"(, "motion": "planar",
        "stiffness": {"default": {"A": 300, "B": 100, "conversion_height": 30}},
-       "initial": {"position": [-150, 0, 0], "heading": 0, "speed": 20, "place_at_contact": {"with": "pole", "gap": 0.5}}},
+       "initial": {"position": [-150, 0, 0], "heading": 0, "speed": )" + std::to_string(c.speed) +
+                           R"(, "place_at_contact": {"with": "pole", "gap": 0.5}}},
       {"name": "pole", "mesh": {"cylinder": {"radius": 6, "height": 100, "segments": 32}}, "rigid": true,
-       "motion": "fixed", "friction": 0.3, "restitution": 0, "initial": {"position": [0, 15, 0]}}]})",
-                       "box_into_offset_pole.json");
+       "motion": "fixed", "friction": )" + friction + R"(, "restitution": 0, "initial": {"position": [0, )" +
+                           std::to_string(c.offset) + R"(, 0]}}]})",
+                       "box_into_round_pole.json");
+}
+
+// the box (3 in cells) at 20 mph into the pole 15 in off its axis, mu 0.3
+Scenario BoxIntoOffsetPole(const std::string& search_direction) {
+  return BoxIntoPole({3, 20.0, 15.0, 0.3, 1.5, search_direction});
 }
 
 // With the local-average-normal search the box's own nodes and the pole's nodes pushed the same faces
@@ -235,24 +255,6 @@ TEST(RoundPole, NodesStayInTheBoxForBothSearches) {
     if (search == "velocity") velocity_crush = sum.bodies[0].max_crush;
     EXPECT_NEAR(sum.bodies[0].max_crush, velocity_crush, 0.20 * velocity_crush) << search;
   }
-}
-
-// a 3000 lb box (A 300 lb/in, B 100 lb/in^2 over 30 in, e 0), its front in `cell` in cells, at 10 mph
-// into a fixed 12 in round pole (32 facets) `offset` in off its axis, friction mu on both
-Scenario BoxIntoRoundPole(int cell, double offset, double mu) {
-  const std::string segments = "[18, " + std::to_string(66 / cell) + ", " + std::to_string(30 / cell) + "]";
-  const std::string friction = std::to_string(mu);
-  return ParseScenario(R"({"units": "US", "time": {"step": 0.0005, "duration": 1.0, "stop_at_separation": true},
-    "contact": {"passes_per_step": 2},
-    "bodies": [
-      {"name": "box", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": )" + segments + R"(}},
-       "weight": 3000, "restitution": 0, "friction": )" + friction + R"(, "motion": "planar",
-       "stiffness": {"default": {"A": 300, "B": 100, "conversion_height": 30}},
-       "initial": {"position": [-150, 0, 0], "heading": 0, "speed": 10, "place_at_contact": {"with": "pole", "gap": 0.5}}},
-      {"name": "pole", "mesh": {"cylinder": {"radius": 6, "height": 100, "segments": 32}}, "rigid": true,
-       "motion": "fixed", "friction": )" + friction + R"(, "restitution": 0, "initial": {"position": [0, )" +
-                           std::to_string(offset) + R"(, 0]}}]})",
-                       "box_into_round_pole.json");
 }
 
 // CRASH3 over the pole's shadow: each strip dy of the front is a column crushed c - R + sqrt(R^2 - y^2)
@@ -308,7 +310,7 @@ TEST(RoundPole, BoxCrushFollowsTheColumnClosedForm) {
   for (int cell : {2, 3})
     for (double offset : {0.0, 1.5})
       for (double divide : {1.0, 2.0, 4.0}) {
-        Scenario s = BoxIntoRoundPole(cell, offset, 0.3);
+        Scenario s = BoxIntoPole({cell, 10.0, offset});
         s.time_step /= divide;
         expect_crush(std::to_string(cell) + " in cells, " + std::to_string(offset).substr(0, 3) + " in off, dt/" +
                          std::to_string(static_cast<int>(divide)),
@@ -320,7 +322,7 @@ TEST(RoundPole, BoxCrushFollowsTheColumnClosedForm) {
                         s->bodies[1].place_at_contact->with = 0;
                       }});
   for (const auto& [label, vary] : variants) {
-    Scenario s = BoxIntoRoundPole(2, 0.0, 0.3);
+    Scenario s = BoxIntoPole({2});
     vary(&s);
     expect_crush("2 in cells, " + label, s);
   }
