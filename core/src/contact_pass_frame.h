@@ -21,6 +21,18 @@ inline Stiffness CornerAverage(const BodyModel& model, const std::array<int, 3>&
   return k;
 }
 
+// spec §5: the master face a slave node presses, as one crushable layer: its corners' average law
+// (above) and their mean crush |Delta|
+struct MasterLayer {
+  Stiffness k;
+  double deflection = 0.0;  // [m]
+};
+inline MasterLayer MasterLayerAt(const BodyModel& model, const BodyState& state, const std::array<int, 3>& triangle) {
+  MasterLayer layer{CornerAverage(model, triangle)};
+  for (int corner : triangle) layer.deflection += state.delta[corner].norm() / 3.0;
+  return layer;
+}
+
 // slave-to-master transform and body kinematics of one pass (master frame = master body frame)
 struct ContactEngine::PassFrame {
   const BodyModel* master_model;

@@ -244,14 +244,16 @@ void ContactEngine::AccountWork() {
       friction -= (p.friction_force[k].dot(v) + p.friction_moment[k].dot(w)) * unbooked_dt_;
     }
     // each side's share: a rigid side takes none; two deformable sides share the crush work as their
-    // node laws did over the step, and the friction work evenly (heat at the common interface)
+    // layers gave way at equal pressure over the step (spec §5, share_work: not as their node laws
+    // booked it, which follows how finely each mesh's nodes resolve the other's share), and the
+    // friction work evenly (heat at the common interface)
     // (each share from its own side's numbers, so listing the bodies the other way round books the same bits)
     const bool rigid[2] = {models_[p.body[0]]->rigid, models_[p.body[1]]->rigid};
-    const double e0 = p.law_energy[0], e1 = p.law_energy[1];
-    const bool by_law = !rigid[0] && !rigid[1] && e0 * e1 >= 0.0 && e0 + e1 != 0.0;
+    const double s0 = p.share_work[0], s1 = p.share_work[1];
+    const bool by_share = !rigid[0] && !rigid[1] && s0 + s1 > 0.0;
     for (int k = 0; k < 2; ++k) {
       const double even = rigid[k] ? 0.0 : rigid[1 - k] ? 1.0 : 0.5;
-      const double crush = by_law ? p.law_energy[k] / (e0 + e1) : even;
+      const double crush = by_share ? p.share_work[k] / (s0 + s1) : even;
       states_[p.body[k]].crush_energy += crush * normal;
       states_[p.body[k]].friction_energy += even * friction;
     }
@@ -374,6 +376,24 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   // spec §7 SlaveNodeFriction acts here, mu times the normal force (its direction once the pair's
   // normal loads are known: AddFriction)
   if (f.mu > 0.0) out->friction_points.push_back({arm_slave, arm_master, normal_earth, f.mu * node_force});
+  // spec §5, two crushable layers in series: the interface's work over the step, force times the
+  // approach, splits as the layers share a closure at equal pressure (the master's part is its crush
+  // at the node, whether or not its own nodes reach the point)
+  if (!f.master_model->rigid) {
+    const double work = node_force * std::abs(hit.rel_velocity.dot(hit.normal)) * dt;
+    const double slave_part = SlavePartAtNode(f, v, hit);
+    out->sums.slave_share_work += slave_part * work;
+    out->sums.master_share_work += (1.0 - slave_part) * work;
+  }
+}
+
+double ContactEngine::SlavePartAtNode(const PassFrame& f, int v, const Located& hit) const {
+  // the layers as RestoreNode shared the penetration: the node's law and crush, and the face's
+  const Stiffness& k = f.slave_model->VertexStiffness(v);
+  const double deflection = f.slave->delta[v].norm(), depth = std::max(hit.depth, 0.0);
+  const MasterLayer m = MasterLayerAt(*f.master_model, *f.master, f.master_model->mesh.triangles[hit.triangle]);
+  const double theta = LayerTheta(k, deflection, m.k, m.deflection, depth);
+  return SlavePartOfClosure(k, deflection, m.k, m.deflection, depth, theta, options_.null_band);
 }
 
 ContactEngine::PassFrame ContactEngine::FrameOf(int master, int slave) {
@@ -422,6 +442,8 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
     sums.friction_points.insert(sums.friction_points.end(), part.friction_points.begin(), part.friction_points.end());
     sums.touching_area += part.sums.touching_area;
     sums.law_energy += part.sums.law_energy;
+    sums.slave_share_work += part.sums.slave_share_work;
+    sums.master_share_work += part.sums.master_share_work;
     diag->Add(part.diag);
     now_touching.insert(now_touching.end(), part.touching.begin(), part.touching.end());
     now_holding.insert(now_holding.end(), part.holding.begin(), part.holding.end());
@@ -478,6 +500,8 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
     out.contact_area[ks] += p.touching_area;
     ++slave_passes[ks];
     const double w = weights[i];
+    out.share_work[ks] += w * p.slave_share_work;
+    out.share_work[km] += w * p.master_share_work;
     out.normal_force[ks] += w * p.normal.force_slave;
     out.normal_moment[ks] += w * p.normal.moment_slave;
     out.normal_force[km] -= w * p.normal.force_slave;
@@ -663,12 +687,9 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     const double depth = std::max(hit->depth, 0.0);
     double push = depth;
     if (!f.master_model->rigid) {
-      const auto& tri = f.master_model->mesh.triangles[hit->triangle];
-      const Stiffness k_m = CornerAverage(*f.master_model, tri);
-      double deflection_m = 0.0;
-      for (int corner : tri) deflection_m += f.master->delta[corner].norm() / 3.0;
-      const double theta = CrushShare(k_m.A + k_m.B * deflection_m, k_m.B, k.A + k.B * deflection, k.B, depth);
-      push = EqualPressureShare(k, deflection, k_m, deflection_m, depth, theta, options_.null_band);
+      const MasterLayer m = MasterLayerAt(*f.master_model, *f.master, f.master_model->mesh.triangles[hit->triangle]);
+      const double theta = LayerTheta(k, deflection, m.k, m.deflection, depth);
+      push = EqualPressureShare(k, deflection, m.k, m.deflection, depth, theta, options_.null_band);
     }
     // spec §2 PushbackReduction (version 4 only): withhold a fraction, at most PUSHBACK_REDUCE_LIMIT
     if (options_.version == 4 && push > 0.0) {

@@ -13,6 +13,10 @@ constexpr int kMaxShareIterations = 60;
 // relative bracket width at which the split is converged (round-off of the deflection sums)
 constexpr double kShareTolerance = 1e-12;
 
+// relative pressure difference within which the equal-pressure split's two sides agree (its bracket
+// closes to 1e-12 of the depth)
+constexpr double kSamePressure = 1e-9;
+
 // slope dg/d(delta) of the loading law (spec §3): zero in the null band and beyond saturation
 double LoadingSlope(const Stiffness& k, double delta, double null_band) {
   if (delta <= null_band || (k.sat_crush > 0.0 && delta >= k.sat_crush)) return 0.0;
@@ -62,6 +66,34 @@ double EqualPressureShare(const Stiffness& slave, double slave_deflection, const
     (h < 0.0 ? lo : hi) = x;
   }
   return x;
+}
+
+double LayerTheta(const Stiffness& slave, double slave_deflection, const Stiffness& master, double master_deflection,
+                  double depth) {
+  return CrushShare(master.A + master.B * master_deflection, master.B, slave.A + slave.B * slave_deflection, slave.B,
+                    depth);
+}
+
+double SlavePartOfClosure(const Stiffness& slave, double slave_deflection, const Stiffness& master,
+                          double master_deflection, double depth, double theta, double null_band) {
+  // the two layers' crush once the penetration is shared
+  const double x = EqualPressureShare(slave, slave_deflection, master, master_deflection, depth, theta, null_band);
+  const double c_slave = slave_deflection + x, c_master = master_deflection + std::max(depth, 0.0) - x;
+  // two hardening layers give way in inverse proportion to their slopes
+  const double k_slave = LoadingSlope(slave, c_slave, null_band);
+  const double k_master = LoadingSlope(master, c_master, null_band);
+  if (k_slave > 0.0 && k_master > 0.0) return k_master / (k_slave + k_master);
+  // a flat layer (null band, saturation) gives way alone once the other presses as hard as it holds;
+  // pressed less, it holds and the other gives way; both flat at one pressure: theta
+  const double p_slave = LoadingPressure(slave, c_slave, null_band);
+  const double p_master = LoadingPressure(master, c_master, null_band);
+  const double tolerance = kSamePressure * std::max(std::abs(p_slave), std::abs(p_master));
+  const bool slave_gives = k_slave <= 0.0 && p_slave <= p_master + tolerance;
+  const bool master_gives = k_master <= 0.0 && p_master <= p_slave + tolerance;
+  if (slave_gives && master_gives) return std::clamp(theta, 0.0, 1.0);
+  if (slave_gives) return 1.0;
+  if (master_gives) return 0.0;
+  return k_slave <= 0.0 ? 0.0 : 1.0;  // the flat one holds: the hardening one gives way
 }
 
 }  // namespace dymesh

@@ -86,6 +86,36 @@ TEST(EqualPressureShare, SaturatedSideTakesTheRest) {
   EXPECT_NEAR(x, 1.0, 1e-12);
 }
 
+TEST(SlavePartOfClosure, HardeningLayersGiveWayInverselyToTheirSlopes) {
+  // series springs past the null band: dx_s / d(depth) = B_m / (B_s + B_m), whatever the crush so far
+  EXPECT_NEAR(SlavePartOfClosure(Law(300, 100), 4.0, Law(300, 200), 2.0, 0.3, 0.5, kNullBand), 2.0 / 3.0, 1e-12);
+  // the derivative of the equal-pressure share, by a finite difference of it (cubic laws, C and D terms)
+  const Stiffness s = Law(10, 3, 0.5, 0.01), m = Law(8, 1, 0.2, 0.05);
+  const double ds = 1.0, dm = 3.0, depth = 1.0, h = 1e-6;
+  const double slope =
+      (EqualPressureShare(s, ds, m, dm, depth + h, 0.3, kNullBand) - EqualPressureShare(s, ds, m, dm, depth - h, 0.3, kNullBand)) /
+      (2 * h);
+  EXPECT_NEAR(SlavePartOfClosure(s, ds, m, dm, depth, 0.3, kNullBand), slope, 1e-6);
+  // the roles swapped: the parts are complements
+  EXPECT_NEAR(SlavePartOfClosure(s, ds, m, dm, depth, 0.3, kNullBand) + SlavePartOfClosure(m, dm, s, ds, depth, 0.7, kNullBand),
+              1.0, 1e-9);
+}
+
+TEST(SlavePartOfClosure, FlatLayerGivesWayAloneOnlyAtItsPlateau) {
+  // the slave in its null band (A 300) against a master pressing 300 + 200 (1.0 - 0.5) = 400 > 300:
+  // the share puts the slave through its band first, so it takes the whole further closure
+  EXPECT_EQ(SlavePartOfClosure(Law(300, 100), 0.0, Law(300, 200), 1.0, 0.2, 0.5, kNullBand), 1.0);
+  // an uncrushed hard slave (A 600) against a soft master at 300 + 100 (1.0 - 0.5) = 350 < 600: the
+  // slave holds, the master gives way
+  EXPECT_EQ(SlavePartOfClosure(Law(600, 100), 0.0, Law(300, 100), 1.0, 0.1, 0.5, kNullBand), 0.0);
+  // both in their bands at one pressure: theta's split
+  EXPECT_EQ(SlavePartOfClosure(Law(300, 100), 0.0, Law(300, 200), 0.0, 0.2, 0.25, kNullBand), 0.25);
+  // a saturated master (held at 400) against a hardening slave at 400: the master gives way alone
+  Stiffness sat = Law(300, 200);
+  sat.sat_crush = 1.0;
+  EXPECT_EQ(SlavePartOfClosure(Law(300, 100), 1.5, sat, 2.0, 0.0, 0.5, kNullBand), 0.0);
+}
+
 TEST(EqualPressureShare, NoDepthNoShare) {
   EXPECT_EQ(EqualPressureShare(Law(1, 1), 0.0, Law(1, 1), 0.0, 0.0, 0.5, kNullBand), 0.0);
 }

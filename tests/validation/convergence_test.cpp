@@ -25,6 +25,7 @@ Scenario Demo(const std::string& name) { return LoadScenario(std::string(DYMESH_
 struct Outcome {
   std::vector<double> delta_v;  // [m/s] by body name order of the base scenario
   double crush = 0.0;           // [J] ledger crush work, all bodies
+  std::vector<double> body_crush;  // [J] each body's share of it, same order
   double friction = 0.0;        // [J] ledger friction work, all bodies
   double balance = 0.0;
   std::vector<double> yaw_rate;  // [rad/s] after the contact, same order
@@ -44,7 +45,9 @@ Outcome Run(Scenario s, bool swap, std::vector<std::shared_ptr<const BodyModel>>
   Outcome o;
   o.delta_v = {sum.bodies[0].delta_v, sum.bodies[1].delta_v};
   o.yaw_rate = {sum.bodies[0].final_yaw_rate, sum.bodies[1].final_yaw_rate};
+  o.body_crush = {sum.bodies[0].crush_energy, sum.bodies[1].crush_energy};
   if (swap) std::swap(o.delta_v[0], o.delta_v[1]);
+  if (swap) std::swap(o.body_crush[0], o.body_crush[1]);
   if (swap) std::swap(o.yaw_rate[0], o.yaw_rate[1]);
   o.contact_end = sum.contact_end;
   o.status = sum.status;
@@ -74,9 +77,11 @@ Outcome RunInTurnedBodyFrames(Scenario s, double angle) {
 }
 
 // the bar: each variant changes delta-V and the contact work (crush + friction) by under 2 %,
-// and balances within 2 %. The split of that work between crush and friction is printed, not held to
-// 2 %: with the p406 mesh 1:4 it moves by up to 2.2 % (crush) and 6.6 % (friction), a known limit in
-// the README. Nor is the yaw rate after the contact, printed: it moves by 1-8 % on the oblique, 25-29 %
+// and balances within 2 %; the crush work moved from one body to the other stays under 2 % of it (at
+// most 0.9 %, the offset with the p406 mesh 1:4: -2.1 % of the stock car's own; split by the node laws
+// until the 45th session, the p406 took 5-12 % more with its mesh 1:4). The split of the contact work
+// between crush and friction is printed, not held to 2 %: at dt/2 the oblique's crush moves -2.2 %
+// (friction +4.0 %), a known limit in the README. Nor is the yaw rate after the contact, printed: it moves by 1-8 % on the oblique, 25-29 %
 // of the side impact's small 11 deg/s, and 88 % with the p406 mesh 1:4 on the offset impact, where it
 // differs already in the main pulse (README known limit). (The oblique's delta-V missed the bar
 // at dt/2, -2.92 %, until nodes pressed on a deformable master stopped unloading when a gap opened in
@@ -94,6 +99,16 @@ void ExpectClose(const Outcome& base, const Outcome& v, const std::string& label
               label.c_str(), 100 * (v.delta_v[0] / base.delta_v[0] - 1), 100 * (v.delta_v[1] / base.delta_v[1] - 1),
               100 * ((v.crush + v.friction) / work - 1), 100 * (v.crush / base.crush - 1),
               100 * (v.friction / base.friction - 1));
+  // the split of the crush work between the bodies (the two layers at equal pressure, spec §5): the
+  // work that moves from one body to the other, under 2 % of the crush work
+  EXPECT_NEAR(v.body_crush[0] / v.crush, base.body_crush[0] / base.crush, 0.02) << label;
+  std::printf("[measured] %s: each body's crush energy %+.2f %% / %+.2f %%, its part of the crush work %+.2f %% / "
+              "%+.2f %% (base %.0f / %.0f J)\n",
+              label.c_str(), 100 * (v.body_crush[0] / base.body_crush[0] - 1),
+              100 * (v.body_crush[1] / base.body_crush[1] - 1),
+              100 * (v.body_crush[0] / v.crush / (base.body_crush[0] / base.crush) - 1),
+              100 * (v.body_crush[1] / v.crush / (base.body_crush[1] / base.crush) - 1), base.body_crush[0],
+              base.body_crush[1]);
   std::printf("[measured] %s: yaw rate after %+.2f %% / %+.2f %% (base %.1f / %.1f deg/s), contact ends %.4f s (base %.4f s), status %s\n",
               label.c_str(), 100 * (v.yaw_rate[0] / base.yaw_rate[0] - 1), 100 * (v.yaw_rate[1] / base.yaw_rate[1] - 1),
               base.yaw_rate[0] / units::kDegree, base.yaw_rate[1] / units::kDegree, v.contact_end, base.contact_end,

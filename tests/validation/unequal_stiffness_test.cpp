@@ -2,6 +2,7 @@
 // purpose, SMAC's rule), against the closed form, in either body order and with any pass count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "dymesh/io/body_models.h"
@@ -22,7 +23,26 @@ struct Law2D {
   double a, b;  // [lb/in], [lb/in^2]
   // force per unit width of spec §3 (Eq. 1 per width) at crush c [in]
   double ForcePerWidth(double c) const { return c <= kNullBandIn ? a : a + b * (c - kNullBandIn); }
+  // its work per unit width [lb in / in] from no crush to the crush where it carries f >= a: the null
+  // band at a, then the line, integral of f dC = (f^2 - a^2) / (2 b)
+  double WorkPerWidth(double f) const { return a * kNullBandIn + (f * f - a * a) / (2 * b); }
 };
+
+constexpr double kWidthIn = 66.0;  // the boxes' fronts, loaded whole
+
+// The two layers in series carry one force per width f at every moment (equal pressure), so each
+// side's crush work is its own law's work up to the common peak force: W_s(f) and W_h(f) above. The
+// peak force is the one at which they sum to the contact work per width (e = 0: the boxes end at
+// their common velocity, no rebound); found by bisection. Returns the soft side's part W_s / (W_s + W_h)
+double ExpectedSoftShare(Law2D soft, Law2D hard, double work_per_width) {
+  double lo = std::max(soft.a, hard.a), hi = 1e6;
+  for (int i = 0; i < 200; ++i) {
+    const double f = 0.5 * (lo + hi);
+    (soft.WorkPerWidth(f) + hard.WorkPerWidth(f) < work_per_width ? lo : hi) = f;
+  }
+  const double f = 0.5 * (lo + hi);
+  return soft.WorkPerWidth(f) / (soft.WorkPerWidth(f) + hard.WorkPerWidth(f));
+}
 
 // soft and hard boxes head-on at 15 mph each, fronts 1 in apart; `soft_first` picks the body order
 Scenario InLine(Law2D soft, Law2D hard, bool soft_first, int passes) {
@@ -43,7 +63,8 @@ Scenario InLine(Law2D soft, Law2D hard, bool soft_first, int passes) {
 }
 
 struct Crush {
-  double soft, hard;  // [in] largest dynamic crush of each
+  double soft, hard;                // [in] largest dynamic crush of each
+  double soft_work, hard_work;      // [in lb] each side's crush energy (the ledger's, split)
 };
 
 Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
@@ -52,7 +73,10 @@ Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
   sim.Run();
   const Summary s = Summarize(sim);
   Crush c{};
-  for (const BodySummary& b : s.bodies) (b.name == "soft" ? c.soft : c.hard) = b.max_dynamic_crush / u::kInch;
+  for (const BodySummary& b : s.bodies) {
+    (b.name == "soft" ? c.soft : c.hard) = b.max_dynamic_crush / u::kInch;
+    (b.name == "soft" ? c.soft_work : c.hard_work) = b.crush_energy / (u::kPoundForce * u::kInch);
+  }
   EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02);
   // flat fronts meet flat fronts: the node laws account for the contact work (2 %); not where the
   // sides differ in A (the harder side's uncrushed nodes report their own A while the softer side
@@ -76,8 +100,17 @@ void ExpectEqualPressure(Law2D soft, Law2D hard, const char* label) {
       // the closed-form crush of the soft side given the hard side's: C_s = d0 + (f_h - a_s) / b_s
       const double expected_soft = kNullBandIn + (f_hard - soft.a) / soft.b;
       EXPECT_NEAR(c.soft, expected_soft, 0.10 * expected_soft) << label;
-      std::printf("[measured] %s, passes %d, soft first %d: crush %.3f / %.3f in, force per width %.1f / %.1f lb/in\n",
-                  label, passes, soft_first, c.soft, c.hard, f_soft, f_hard);
+      // each side's part of the crush energy, against the layers' closed form at the measured total;
+      // 2 %, the energy bar (measured 0.1 %). Held where A is equal: where it differs the
+      // harder side's uncrushed nodes press with their own A while the softer side crushes alone at
+      // less (the contact work 4 % over the node laws, a known limit in the README), and that work is
+      // booked to the softer side, which alone gives way then (measured +1.8 to +2.2 % over the form)
+      const double total = c.soft_work + c.hard_work;
+      const double expected_share = ExpectedSoftShare(soft, hard, total / kWidthIn);
+      if (equal_a) EXPECT_NEAR(c.soft_work / total, expected_share, 0.02 * expected_share) << label;
+      std::printf("[measured] %s, passes %d, soft first %d: crush %.3f / %.3f in, force per width %.1f / %.1f lb/in, "
+                  "soft side's crush energy %.4f of %.0f in lb (closed form %.4f)\n",
+                  label, passes, soft_first, c.soft, c.hard, f_soft, f_hard, c.soft_work / total, total, expected_share);
     }
   }
 }

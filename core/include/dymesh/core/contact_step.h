@@ -45,6 +45,10 @@ struct PairLoads {
   Vec3 friction_force[2] = {Vec3::Zero(), Vec3::Zero()};   ///< [N] earth frame
   Vec3 friction_moment[2] = {Vec3::Zero(), Vec3::Zero()};  ///< [N m] earth frame
   double law_energy[2] = {0.0, 0.0};  ///< [J] node-law work on body[k]'s nodes over the step
+  /// [J] the interface's work over the step on body[k]'s layer (spec §5, layers in series): at each
+  /// touching node, force times the step's approach there, times body[k]'s part of a closure shared
+  /// at equal pressure
+  double share_work[2] = {0.0, 0.0};
   /// [m^2] contact area of body[k]'s own nodes carrying force against the other (spec §3 A_v summed),
   /// the mean over the step's passes in which body[k] was the slave; 0 for a rigid body (never a slave)
   double contact_area[2] = {0.0, 0.0};
@@ -114,6 +118,7 @@ class ContactEngine {
     Wrench normal;
     double touching_area = 0.0;   // [m^2] of slave nodes carrying force
     double law_energy = 0.0;      // [J] node-law work on the slave's nodes
+    double slave_share_work = 0.0, master_share_work = 0.0;  // [J] interface work at its nodes, split
     std::vector<FrictionPoint> friction_points;  // ascending node order
   };
   // what one chunk of slave nodes produced (folded in chunk order); buffers reused across passes
@@ -190,6 +195,10 @@ class ContactEngine {
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding);
   void CommitPending(int body);
+  // the slave's part of a further closure at a touching node against a deformable master (spec §5:
+  // two layers in series at equal pressure, SlavePartOfClosure)
+  double SlavePartAtNode(const PassFrame& f, int v, const Located& hit) const;
+
   // spec §1 swapping against a rigid body: its nodes, as slaves, push the deformable body's faces they
   // crossed between the nodes that `engaged` holds on it (a pole meeting a coarse panel between its
   // nodes); the deformable body's face corners take the crush. Returns the loads with the rigid body as

@@ -19,4 +19,17 @@ double CrushShare(double a_master, double b_master, double a_slave, double b_sla
 double EqualPressureShare(const Stiffness& slave, double slave_deflection, const Stiffness& master,
                           double master_deflection, double depth, double theta, double null_band);
 
+/// theta (Eq. 4-7) for a slave node of law `slave` at `slave_deflection` against a master face of law
+/// `master` at `master_deflection` (the face's corner averages), penetration `depth` [m].
+double LayerTheta(const Stiffness& slave, double slave_deflection, const Stiffness& master, double master_deflection,
+                  double depth);
+
+/// The slave's part of a further closure at the contact, once the penetration `depth` is shared at
+/// equal pressure (EqualPressureShare's derivative in depth): two crushable layers in series give way
+/// in inverse proportion to their law slopes, k_master / (k_slave + k_master); a side at a flat part of
+/// its law (null band, saturation) gives way alone; a side pressing harder than the other's law gives
+/// there takes none; where both are flat at one pressure, `theta` splits it.
+double SlavePartOfClosure(const Stiffness& slave, double slave_deflection, const Stiffness& master,
+                          double master_deflection, double depth, double theta, double null_band);
+
 }  // namespace dymesh
