@@ -143,6 +143,7 @@ void ExpectConverged(const std::string& name, double parted_by = 0.0) {
   const Outcome swapped = Run(base_scenario, true);
   EXPECT_EQ(swapped.delta_v, base.delta_v) << name;
   EXPECT_EQ(swapped.crush, base.crush) << name;
+  EXPECT_EQ(swapped.body_crush, base.body_crush) << name;
 }
 
 TEST(Convergence, SideImpactDemo) { ExpectConverged("car_to_car_side.json", 0.5); }

@@ -69,7 +69,9 @@ void ExpectPoleStopsCar(const std::string& label, double offset_in, const std::f
   const PoleRun r = RunPole(s);
   const double lower = speed * (1.0 - d * d / (r.yaw_radius2 + d * d));
   const double upper = speed * (1.0 + std::sqrt(2.0 * r.restitution));
-  if (lower_bar) EXPECT_GT(r.delta_v, lower) << label << ", pole " << offset_in << " in off the centreline";
+  if (lower_bar) {
+    EXPECT_GT(r.delta_v, lower) << label << ", pole " << offset_in << " in off the centreline";
+  }
   EXPECT_LT(r.delta_v, upper) << label << ", pole " << offset_in << " in off the centreline";
   EXPECT_NEAR(r.balance, 0.0, 0.02) << label;
   std::printf("[measured] round pole %.0f in off, %s: delta-V %.2f mph (bars %.2f-%.2f), balance %.4f %%\n", offset_in,
@@ -189,8 +191,12 @@ TEST(RoundPole, CrushDeeperThanThePoleCameIsMarked) {
     for (const RunWarning& w : sum.warnings) marked = marked || (w.code == "crush_beyond_reach" && w.field == "bodies[0]");
     std::printf("[measured] round pole 5 in off, moved %d thou: deepest crush %.1f in, %.1f in beyond the pole's "
                 "reach, marked %d\n", jitter, sum.bodies[0].max_crush / u::kInch, worst / u::kInch, marked ? 1 : 0);
-    if (worst > 3.5 * u::kInch) EXPECT_TRUE(marked) << jitter << " thou: crushed beyond the pole's reach, unmarked";
-    if (worst < 1.0 * u::kInch) EXPECT_FALSE(marked) << jitter << " thou: within the pole's reach, marked";
+    if (worst > 3.5 * u::kInch) {
+      EXPECT_TRUE(marked) << jitter << " thou: crushed beyond the pole's reach, unmarked";
+    }
+    if (worst < 1.0 * u::kInch) {
+      EXPECT_FALSE(marked) << jitter << " thou: within the pole's reach, marked";
+    }
     beyond += worst > 3.5 * u::kInch ? 1 : 0;
   }
   // the marking is exercised (8 of the 8 on 2026-11-26; none once the tipped faces are mended: then
