@@ -388,7 +388,7 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
 }
 
 double ContactEngine::SlavePartAtNode(const PassFrame& f, int v, const Located& hit) const {
-  // the layers as RestoreNode shared the penetration: the node's law and crush, and the face's
+  // the two layers as RestoreNode shared the penetration: the node's law and crush, the face's corners'
   const Stiffness& k = f.slave_model->VertexStiffness(v);
   const double deflection = f.slave->delta[v].norm(), depth = std::max(hit.depth, 0.0);
   const MasterLayer m = MasterLayerAt(*f.master_model, *f.master, f.master_model->mesh.triangles[hit.triangle]);

@@ -92,13 +92,12 @@ TEST(SlavePartOfClosure, HardeningLayersGiveWayInverselyToTheirSlopes) {
   // the derivative of the equal-pressure share, by a finite difference of it (cubic laws, C and D terms)
   const Stiffness s = Law(10, 3, 0.5, 0.01), m = Law(8, 1, 0.2, 0.05);
   const double ds = 1.0, dm = 3.0, depth = 1.0, h = 1e-6;
-  const double slope =
-      (EqualPressureShare(s, ds, m, dm, depth + h, 0.3, kNullBand) - EqualPressureShare(s, ds, m, dm, depth - h, 0.3, kNullBand)) /
-      (2 * h);
-  EXPECT_NEAR(SlavePartOfClosure(s, ds, m, dm, depth, 0.3, kNullBand), slope, 1e-6);
+  const double above = EqualPressureShare(s, ds, m, dm, depth + h, 0.3, kNullBand);
+  const double below = EqualPressureShare(s, ds, m, dm, depth - h, 0.3, kNullBand);
+  const double part = SlavePartOfClosure(s, ds, m, dm, depth, 0.3, kNullBand);
+  EXPECT_NEAR(part, (above - below) / (2 * h), 1e-6);
   // the roles swapped: the parts are complements
-  EXPECT_NEAR(SlavePartOfClosure(s, ds, m, dm, depth, 0.3, kNullBand) + SlavePartOfClosure(m, dm, s, ds, depth, 0.7, kNullBand),
-              1.0, 1e-9);
+  EXPECT_NEAR(part + SlavePartOfClosure(m, dm, s, ds, depth, 0.7, kNullBand), 1.0, 1e-9);
 }
 
 TEST(SlavePartOfClosure, FlatLayerGivesWayAloneOnlyAtItsPlateau) {

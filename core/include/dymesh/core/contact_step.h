@@ -198,7 +198,6 @@ class ContactEngine {
   // the slave's part of a further closure at a touching node against a deformable master (spec §5:
   // two layers in series at equal pressure, SlavePartOfClosure)
   double SlavePartAtNode(const PassFrame& f, int v, const Located& hit) const;
-
   // spec §1 swapping against a rigid body: its nodes, as slaves, push the deformable body's faces they
   // crossed between the nodes that `engaged` holds on it (a pole meeting a coarse panel between its
   // nodes); the deformable body's face corners take the crush. Returns the loads with the rigid body as
