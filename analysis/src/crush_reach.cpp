@@ -16,14 +16,14 @@ constexpr std::size_t kDeepestNodes = 256;
 
 // the corners of every other body's rest bounding box at every state recorded while the bodies were
 // in contact (a node is pushed only then), in `body`'s frame
-std::vector<Vec3> OtherBodiesCorners(const Simulation& sim, int body) {
+std::vector<Vec3> OtherBodiesCorners(const Simulation& sim, int body, const std::vector<MeshStats>& rest_stats) {
   std::vector<Vec3> points;
   if (sim.first_contact_time() < 0.0) return points;
   const ContactEngine& engine = sim.engine();
   const double slack = 0.5 * sim.scenario().time_step;  // the recorded times' round-off
   for (int other = 0; other < engine.body_count(); ++other) {
     if (other == body) continue;
-    const MeshStats rest = ComputeStats(engine.model(other).mesh);
+    const MeshStats& rest = rest_stats[other];
     std::vector<Vec3> corners;
     for (int corner = 0; corner < 8; ++corner)
       corners.emplace_back((corner & 1) ? rest.max.x() : rest.min.x(), (corner & 2) ? rest.max.y() : rest.min.y(),
@@ -55,9 +55,9 @@ std::vector<int> DeepestNodes(const BodyState& state) {
 
 }  // namespace
 
-NodeBeyondReach DeepestNodeBeyondReach(const Simulation& sim, int body) {
+NodeBeyondReach DeepestNodeBeyondReach(const Simulation& sim, int body, const std::vector<MeshStats>& rest_stats) {
   NodeBeyondReach worst;
-  const std::vector<Vec3> reached = OtherBodiesCorners(sim, body);
+  const std::vector<Vec3> reached = OtherBodiesCorners(sim, body, rest_stats);
   if (reached.empty()) return worst;
   const BodyState& state = sim.engine().state(body);
   const std::vector<Vec3>& rest = sim.engine().model(body).mesh.vertices;

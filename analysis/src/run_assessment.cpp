@@ -194,7 +194,7 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          s.bodies[i].name.c_str(), out.vertex, out.distance, sc.contact.toofar_maximum)});
     // a node crushed deeper along its crush than any other body came (spec §2: no push beyond the
     // step's relative motion plus TOOFAR_MARGIN, so the margin is what a node may lie beyond it)
-    const NodeBeyondReach beyond = DeepestNodeBeyondReach(sim, i);
+    const NodeBeyondReach beyond = DeepestNodeBeyondReach(sim, i, rest_stats);
     if (beyond.vertex >= 0 && beyond.crush - beyond.reach > sc.contact.toofar_margin)
       w->push_back({"crush_beyond_reach", "bodies[" + std::to_string(i) + "]",
                     Text("\"%s\": node %d is crushed %.3g m, %.3g m farther along its crush than any other body "

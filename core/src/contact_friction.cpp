@@ -53,12 +53,8 @@ double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::
       friction.Add(-(q.limit / slide) * v_slide, q.arm_slave, q.arm_master);
       limits += q.limit;
     }
-    const double w = weights[i];
-    p->friction_force[ks] += w * friction.force_slave;
-    p->friction_moment[ks] += w * friction.moment_slave;
-    p->friction_force[km] -= w * friction.force_slave;
-    p->friction_moment[km] += w * friction.moment_master;
-    magnitude += w * limits;
+    friction.AddToPair(weights[i], ks, p->friction_force, p->friction_moment);
+    magnitude += weights[i] * limits;
   }
   return magnitude;
 }

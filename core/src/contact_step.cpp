@@ -45,6 +45,13 @@ void ContactEngine::Wrench::Add(const Vec3& force, const Vec3& arm_slave, const 
   moment_master -= arm_master.cross(force);
 }
 
+void ContactEngine::Wrench::AddToPair(double weight, int slave_side, Vec3 (&force)[2], Vec3 (&moment)[2]) const {
+  force[slave_side] += weight * force_slave;
+  moment[slave_side] += weight * moment_slave;
+  force[1 - slave_side] -= weight * force_slave;
+  moment[1 - slave_side] += weight * moment_master;
+}
+
 void ContactEngine::Wrench::operator+=(const Wrench& o) {
   force_slave += o.force_slave;
   moment_slave += o.moment_slave;
@@ -502,19 +509,13 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
     const double w = weights[i];
     out.share_work[ks] += w * p.slave_share_work;
     out.share_work[km] += w * p.master_share_work;
-    out.normal_force[ks] += w * p.normal.force_slave;
-    out.normal_moment[ks] += w * p.normal.moment_slave;
-    out.normal_force[km] -= w * p.normal.force_slave;
-    out.normal_moment[km] += w * p.normal.moment_master;
+    p.normal.AddToPair(w, ks, out.normal_force, out.normal_moment);
   }
   // a rigid body's nodes loaded faces no pass's nodes held: their loads add whole; the node-law work
   // is on the deformable side (the master of those pushes)
   const int ks = rigid_nodes.slave == a ? 0 : 1, km = 1 - ks;
   out.law_energy[km] += rigid_nodes.law_energy;
-  out.normal_force[ks] += rigid_nodes.normal.force_slave;
-  out.normal_moment[ks] += rigid_nodes.normal.moment_slave;
-  out.normal_force[km] -= rigid_nodes.normal.force_slave;
-  out.normal_moment[km] += rigid_nodes.normal.moment_master;
+  rigid_nodes.normal.AddToPair(1.0, ks, out.normal_force, out.normal_moment);
   // each side's own view of the contact area: what its nodes met, per pass
   for (int k = 0; k < 2; ++k)
     if (slave_passes[k] > 0) out.contact_area[k] /= slave_passes[k];

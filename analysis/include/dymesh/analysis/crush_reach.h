@@ -1,5 +1,9 @@
 #pragma once
 
+#include <vector>
+
+#include "dymesh/core/mesh.h"
+
 /// Whether a body's crush lies within the reach of the bodies that crushed it.
 namespace dymesh {
 
@@ -16,7 +20,8 @@ struct NodeBeyondReach {
 /// (spec §2-§5: a node moves only where another body's surface pushes it, so it lies, along its
 /// crush, no deeper than some point of that body came). The other bodies are taken as their rest
 /// bounding boxes at every state recorded while the bodies touched, in this body's frame: a crushed
-/// body reaches less far, so the reach is never under-estimated. vertex is -1 when none lies beyond it.
-NodeBeyondReach DeepestNodeBeyondReach(const Simulation& sim, int body);
+/// body reaches less far, so the reach is never under-estimated. `rest`: every body's rest-mesh stats
+/// (ComputeStats), by body index. vertex is -1 when none lies beyond it.
+NodeBeyondReach DeepestNodeBeyondReach(const Simulation& sim, int body, const std::vector<MeshStats>& rest);
 
 }  // namespace dymesh

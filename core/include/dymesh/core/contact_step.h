@@ -104,6 +104,9 @@ class ContactEngine {
     Vec3 moment_master{0, 0, 0};  // [N m] about the master's CG
     void Add(const Vec3& force, const Vec3& arm_slave, const Vec3& arm_master);
     void operator+=(const Wrench& o);
+    // this wrench times `weight` on a pair's two bodies: on body `slave_side` (0 or 1) as summed, on
+    // the other the opposite force at the same points (its moment about its own CG)
+    void AddToPair(double weight, int slave_side, Vec3 (&force)[2], Vec3 (&moment)[2]) const;
   };
   // a touching slave node where friction acts (spec §7): the point both bodies are loaded at, the
   // master's outward normal there and mu times the node's normal force, earth frame
