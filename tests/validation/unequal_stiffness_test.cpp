@@ -1,5 +1,5 @@
 // Two deformable boxes of unequal stiffness in line: crush shared at equal pressure (spec §5's
-// purpose, SMAC's rule), against the closed form, in either body order and with any pass count.
+// purpose, SMAC's rule), against the closed form, in either body order and with 2, 3 or 4 passes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -84,6 +84,10 @@ Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
   if (law_accounts_for_work) {
     EXPECT_NEAR(s.law_energy, s.crush_energy, 0.02 * s.crush_energy);
   }
+  // where A differs, within 5 % at any pass count (measured 0.96-1.05 over 2-4 passes): a second pass
+  // pair used to count only the nodes that the first pair's interpolation gap happened to miss, and
+  // the node laws went 7 % (3 passes) and 17 % (4 passes) over the contact work
+  EXPECT_NEAR(s.law_energy, s.crush_energy, 0.05 * s.crush_energy);
   std::printf("[measured] node law / contact work %.4f\n", s.law_energy / s.crush_energy);
   return c;
 }
@@ -91,7 +95,7 @@ Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
 // equal pressure at maximum engagement: a_s + b_s (C_s - d0) = a_h + b_h (C_h - d0), both past d0
 void ExpectEqualPressure(Law2D soft, Law2D hard, const char* label) {
   const bool equal_a = soft.a == hard.a;
-  for (int passes : {2, 3}) {
+  for (int passes : {2, 3, 4}) {
     for (bool soft_first : {true, false}) {
       const Crush c = Run(InLine(soft, hard, soft_first, passes), equal_a);
       const double f_soft = soft.ForcePerWidth(c.soft), f_hard = hard.ForcePerWidth(c.hard);
