@@ -84,7 +84,7 @@ Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
   if (law_accounts_for_work) {
     EXPECT_NEAR(s.law_energy, s.crush_energy, 0.02 * s.crush_energy);
   }
-  // where A differs, within 5 % at any pass count (measured 0.96-1.05 over 2-4 passes): a second pass
+  // where A differs, within 5 % at 2-4 passes (measured 0.96-1.04): a second pass
   // pair used to count only the nodes that the first pair's interpolation gap happened to miss, and
   // the node laws went 7 % (3 passes) and 17 % (4 passes) over the contact work
   EXPECT_NEAR(s.law_energy, s.crush_energy, 0.05 * s.crush_energy);
