@@ -78,16 +78,14 @@ Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
     (b.name == "soft" ? c.soft_work : c.hard_work) = b.crush_energy / (u::kPoundForce * u::kInch);
   }
   EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02);
-  // flat fronts meet flat fronts: the node laws account for the contact work (2 %); not where the
-  // sides differ in A (the harder side's uncrushed nodes report their own A while the softer side
-  // crushes at less: 4 % more contact work than node-law work, a known limit in the README)
-  if (law_accounts_for_work) {
-    EXPECT_NEAR(s.law_energy, s.crush_energy, 0.02 * s.crush_energy);
-  }
-  // where A differs, within 5 % at 2-4 passes (measured 0.96-1.04): a second pass
-  // pair used to count only the nodes that the first pair's interpolation gap happened to miss, and
-  // the node laws went 7 % (3 passes) and 17 % (4 passes) over the contact work
-  EXPECT_NEAR(s.law_energy, s.crush_energy, 0.05 * s.crush_energy);
+  // flat fronts meet flat fronts: the node laws account for the contact work (2 %) at any pass count.
+  // Where the sides differ in A, 5 % (measured 0.96-1.04 over 2-4 passes): the harder side's uncrushed
+  // nodes report their own A while the softer side crushes at less, 4 % more contact work than
+  // node-law work with 2 passes (a known limit in the README); and a second pass pair used to count
+  // only the nodes the first pair's interpolation gap happened to miss (7 % over with 3 passes, 17 %
+  // with 4)
+  const double bar = law_accounts_for_work ? 0.02 : 0.05;
+  EXPECT_NEAR(s.law_energy, s.crush_energy, bar * s.crush_energy);
   std::printf("[measured] node law / contact work %.4f\n", s.law_energy / s.crush_energy);
   return c;
 }
