@@ -673,6 +673,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   *new_delta = delta;
   bool touching = false;
   bool held = false;
+  double interface_pressure = INFINITY;  // the most the node presses against a deformable master
   // the master's outward normal in the slave frame: the node is pushed out of the master along it,
   // the way a frictionless surface pushes (no sideways drag whatever the search direction)
   const Vec3 normal_slave = hit ? Vec3(f.r_slave_to_master.transpose() * hit->normal) : Vec3::Zero();
@@ -699,6 +700,12 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       const MasterLayer m = MasterLayerAt(*f.master_model, *f.master, f.master_model->mesh.triangles[hit->triangle]);
       const double theta = LayerTheta(k, deflection, m.k, m.deflection, depth);
       push = EqualPressureShare(k, deflection, m.k, m.deflection, depth, theta, options_.null_band);
+      // spec §5's purpose, one force through two layers in series: a node whose law is flat where the
+      // share leaves it (null band, saturation) holds and carries the master layer's pressure, not its
+      // own (pressing with its own A, a box struck by one ten times softer crushed it 2.5 in where the
+      // softer alone against a wall crushes 6.95)
+      interface_pressure =
+          HeldLayerPressure(k, deflection + push, m.k, m.deflection + depth - push, options_.null_band);
     }
     // spec §2 PushbackReduction (version 4 only): withhold a fraction, at most PUSHBACK_REDUCE_LIMIT
     if (options_.version == 4 && push > 0.0) {
@@ -781,7 +788,9 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   if (!held) s.unload[v] = NextUnloadState(state, touching, new_deflection, s.delta_max[v], e, options_);
   const double area = touching ? ContactNodeArea(m, s, v, normal_slave, hit->depth) : s.node_area[v];
   const double force =
-      touching ? area * NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_) : 0.0;
+      touching ? area * std::min(NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_),
+                                 interface_pressure)
+               : 0.0;
 
   // work of the node law over the deflection change, then commit the new position
   *law_energy += area * NodeLawWork(k, deflection, new_deflection, peak, e, options_);

@@ -96,4 +96,12 @@ double SlavePartOfClosure(const Stiffness& slave, double slave_deflection, const
   return k_slave <= 0.0 ? 0.0 : 1.0;  // the flat one holds: the hardening one gives way
 }
 
+double HeldLayerPressure(const Stiffness& slave, double slave_crush, const Stiffness& master, double master_crush,
+                         double null_band) {
+  // a layer at a flat part of its law holds (takes no crush) while the other presses less than that
+  // plateau, and passes the other's pressure on; a hardening layer carries its own (the share equalised it)
+  if (LoadingSlope(slave, slave_crush, null_band) > 0.0) return INFINITY;
+  return LoadingPressure(master, master_crush, null_band);
+}
+
 }  // namespace dymesh

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "dymesh/core/node_force.h"
 
 namespace dymesh {
@@ -113,6 +115,18 @@ TEST(SlavePartOfClosure, FlatLayerGivesWayAloneOnlyAtItsPlateau) {
   Stiffness sat = Law(300, 200);
   sat.sat_crush = 1.0;
   EXPECT_EQ(SlavePartOfClosure(Law(300, 100), 1.5, sat, 2.0, 0.0, 0.5, kNullBand), 0.0);
+}
+
+TEST(HeldLayerPressure, FlatLayerPassesTheOtherSidesPressureOn) {
+  // series layers carry one force: an uncrushed hard slave (A 600, in its null band) on a soft master
+  // crushed to 1.0 (300 + 100 (1.0 - 0.5) = 350) holds and presses 350, not its own 600
+  EXPECT_DOUBLE_EQ(HeldLayerPressure(Law(600, 100), 0.0, Law(300, 100), 1.0, kNullBand), 350.0);
+  // a saturated slave (held at 300 + 200 * 0.5 = 400) on a master at 300 + 100 (1.3 - 0.5) = 380
+  Stiffness sat = Law(300, 200);
+  sat.sat_crush = 1.0;
+  EXPECT_DOUBLE_EQ(HeldLayerPressure(sat, 2.0, Law(300, 100), 1.3, kNullBand), 380.0);
+  // a hardening slave: the share equalised the pressures, no bound
+  EXPECT_EQ(HeldLayerPressure(Law(300, 100), 1.0, Law(300, 100), 1.0, kNullBand), INFINITY);
 }
 
 TEST(EqualPressureShare, NoDepthNoShare) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "dymesh/io/body_models.h"
@@ -67,7 +68,7 @@ struct Crush {
   double soft_work, hard_work;      // [in lb] each side's crush energy (the ledger's, split)
 };
 
-Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
+Crush RunPair(const Scenario& scenario, double law_bar) {
   auto device = std::make_shared<const accel::EmbreeDevice>();
   Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
@@ -78,24 +79,25 @@ Crush Run(const Scenario& scenario, bool law_accounts_for_work) {
     (b.name == "soft" ? c.soft_work : c.hard_work) = b.crush_energy / (u::kPoundForce * u::kInch);
   }
   EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02);
-  // flat fronts meet flat fronts: the node laws account for the contact work (2 %) at any pass count.
-  // Where the sides differ in A, 5 % (measured 0.96-1.04 over 2-4 passes): the harder side's uncrushed
-  // nodes report their own A while the softer side crushes at less, 4 % more contact work than
-  // node-law work with 2 passes (a known limit in the README); and a second pass pair used to count
-  // only the nodes the first pair's interpolation gap happened to miss (7 % over with 3 passes, 17 %
-  // with 4)
-  const double bar = law_accounts_for_work ? 0.02 : 0.05;
-  EXPECT_NEAR(s.law_energy, s.crush_energy, bar * s.crush_energy);
+  // flat fronts meet flat fronts: the node laws account for the contact work within `law_bar`
+  EXPECT_NEAR(s.law_energy, s.crush_energy, law_bar * s.crush_energy);
   std::printf("[measured] node law / contact work %.4f\n", s.law_energy / s.crush_energy);
   return c;
 }
 
+// how closely the node laws account for the contact work: 2 % (measured 0.997-1.003) with the
+// default 2 passes, or equal A. Where A differs, 3 and 4 passes give 1.03-1.05 (the odd pass's and
+// the later pairs' nodes against a layer held in its null band: not traced, a known limit in the
+// README), held to 5 %. Until a layer held in its null band passed the other side's pressure on, its
+// uncrushed nodes reported their own A (4 % over with 2 passes); and a second pass pair used to count
+// only the nodes the first pair's interpolation gap happened to miss (7 % over with 3 passes, 17 % with 4)
+double NodeLawBar(Law2D soft, Law2D hard, int passes) { return soft.a == hard.a || passes == 2 ? 0.02 : 0.05; }
+
 // equal pressure at maximum engagement: a_s + b_s (C_s - d0) = a_h + b_h (C_h - d0), both past d0
 void ExpectEqualPressure(Law2D soft, Law2D hard, const char* label) {
-  const bool equal_a = soft.a == hard.a;
   for (int passes : {2, 3, 4}) {
     for (bool soft_first : {true, false}) {
-      const Crush c = Run(InLine(soft, hard, soft_first, passes), equal_a);
+      const Crush c = RunPair(InLine(soft, hard, soft_first, passes), NodeLawBar(soft, hard, passes));
       const double f_soft = soft.ForcePerWidth(c.soft), f_hard = hard.ForcePerWidth(c.hard);
       // 5 %: the bar for Newton's third law per unit width (measured under 0.5 %)
       EXPECT_NEAR(f_soft, f_hard, 0.05 * f_hard) << label << " passes " << passes << " soft first " << soft_first;
@@ -103,15 +105,11 @@ void ExpectEqualPressure(Law2D soft, Law2D hard, const char* label) {
       const double expected_soft = kNullBandIn + (f_hard - soft.a) / soft.b;
       EXPECT_NEAR(c.soft, expected_soft, 0.10 * expected_soft) << label;
       // each side's part of the crush energy, against the layers' closed form at the measured total;
-      // 2 %, the energy bar (measured 0.1 %). Held where A is equal: where it differs the
-      // harder side's uncrushed nodes press with their own A while the softer side crushes alone at
-      // less (the contact work 4 % over the node laws, a known limit in the README), and that work is
-      // booked to the softer side, which alone gives way then (measured +1.8 to +2.2 % over the form)
+      // 2 %, the energy bar (measured within 0.3 %; where A differs +1.8 to +2.2 % until the
+      // harder side's uncrushed nodes stopped pressing with their own A)
       const double total = c.soft_work + c.hard_work;
       const double expected_share = ExpectedSoftShare(soft, hard, total / kWidthIn);
-      if (equal_a) {
-        EXPECT_NEAR(c.soft_work / total, expected_share, 0.02 * expected_share) << label;
-      }
+      EXPECT_NEAR(c.soft_work / total, expected_share, 0.02 * expected_share) << label;
       std::printf("[measured] %s, passes %d, soft first %d: crush %.3f / %.3f in, force per width %.1f / %.1f lb/in, "
                   "soft side's crush energy %.4f of %.0f in lb (closed form %.4f)\n",
                   label, passes, soft_first, c.soft, c.hard, f_soft, f_hard, c.soft_work / total, total, expected_share);
@@ -127,6 +125,30 @@ TEST(UnequalStiffness, DoubleBSharesAtEqualPressure) {
 TEST(UnequalStiffness, DoubleAsharesAtEqualPressure) {
   // equal B, A doubled: C_s - C_h = (a_h - a_s) / B = 3 in
   ExpectEqualPressure({300, 100}, {600, 100}, "A 300 vs 600");
+}
+
+// A side ten times stiffer never leaves its null band (A 3000 lb/in against the softer side's peak
+// of about 1300): it holds like a wall and passes the softer side's pressure on. The softer side alone
+// takes the relative kinetic energy (e = 0: the boxes end at their common velocity),
+// ½ (m/2) v² = 45,130 ft lbf over the 66 in front: a_s d0 + (f² - a_s²) / (2 b_s) = W / width gives
+// f = 1304 lb/in and C_s = d0 + (f - a_s) / b_s = 10.54 in. 5 % (the bar of the equal-pressure rows'
+// crush; measured within 1 %). Pressing with its own A, the stiff side made the pair twice as stiff:
+// the softer side crushed 2.8 in at a 30 mph closing (README)
+TEST(UnequalStiffness, LayerHeldInItsNullBandActsAsAWall) {
+  const Law2D soft{300, 100}, hard{3000, 1000};
+  const double relative_ke = 0.5 * (3000.0 / 2) * std::pow(30 * 5280.0 / 3600 * 12, 2) / 386.09;  // [in lb]
+  const double f = std::sqrt(soft.a * soft.a + 2 * soft.b * (relative_ke / kWidthIn - soft.a * kNullBandIn));
+  const double expected_soft = kNullBandIn + (f - soft.a) / soft.b;
+  for (int passes : {2, 3}) {
+    for (bool soft_first : {true, false}) {
+      const Crush c = RunPair(InLine(soft, hard, soft_first, passes), NodeLawBar(soft, hard, passes));
+      EXPECT_NEAR(c.soft, expected_soft, 0.05 * expected_soft) << "passes " << passes << " soft first " << soft_first;
+      EXPECT_LT(c.hard, 0.05) << "the stiff side holds [in]";
+      EXPECT_NEAR(c.soft_work / (c.soft_work + c.hard_work), 1.0, 0.01);
+      std::printf("[measured] stiff side held, passes %d, soft first %d: crush %.3f / %.3f in (closed form %.3f / 0)\n",
+                  passes, soft_first, c.soft, c.hard, expected_soft);
+    }
+  }
 }
 
 }  // namespace

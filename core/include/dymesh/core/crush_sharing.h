@@ -32,4 +32,12 @@ double LayerTheta(const Stiffness& slave, double slave_deflection, const Stiffne
 double SlavePartOfClosure(const Stiffness& slave, double slave_deflection, const Stiffness& master,
                           double master_deflection, double depth, double theta, double null_band);
 
+/// The most a slave node of law `slave` at crush `slave_crush` presses against a master face of law
+/// `master` at `master_crush` (the crushes once the penetration is shared; spec §5's purpose, one force
+/// through two layers in series): where the slave's law is flat (null band, saturation) and the master
+/// gives way below that plateau, the slave holds and carries the master's pressure, not its own;
+/// otherwise no bound (infinity: the shared crushes press equally).
+double HeldLayerPressure(const Stiffness& slave, double slave_crush, const Stiffness& master, double master_crush,
+                         double null_band);
+
 }  // namespace dymesh
