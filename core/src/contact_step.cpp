@@ -702,8 +702,8 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       push = EqualPressureShare(k, deflection, m.k, m.deflection, depth, theta, options_.null_band);
       // spec §5's purpose, one force through two layers in series: a node whose law is flat where the
       // share leaves it (null band, saturation) holds and carries the master layer's pressure, not its
-      // own (pressing with its own A, a box struck by one ten times softer crushed it 2.5 in where the
-      // softer alone against a wall crushes 6.95)
+      // own (pressing with its own A, a box ten times stiffer than the one striking it made the pair
+      // twice as stiff: the striking box kept 2.5 in of crush where against a wall it keeps 6.95)
       interface_pressure =
           HeldLayerPressure(k, deflection + push, m.k, m.deflection + depth - push, options_.null_band);
     }
