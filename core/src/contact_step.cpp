@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -356,8 +357,9 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
     free_gap = DistanceToMaster(f, v, f.slave_model->restitution * f.slave->delta_max[v], &out->scratch);
   Vec3 delta;
   bool holding = false;
+  double slave_part = 0.0;
   const double node_force = RestoreNode(f, v, found ? &hit : nullptr, closing_unfound, free_gap, dt, &out->diag,
-                                        &out->sums.law_energy, &delta, &holding);
+                                        &out->sums.law_energy, &delta, &holding, &slave_part);
   if (delta != f.slave->delta[v]) {
     // the new crush waits in pending_delta_ until committed (with the sibling pass, or at once)
     (*f.pending)[v] = delta;
@@ -388,19 +390,16 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   // at the node, whether or not its own nodes reach the point)
   if (!f.master_model->rigid) {
     const double work = node_force * std::abs(hit.rel_velocity.dot(hit.normal)) * dt;
-    const double slave_part = SlavePartAtNode(f, v, hit);
     out->sums.slave_share_work += slave_part * work;
     out->sums.master_share_work += (1.0 - slave_part) * work;
   }
 }
 
-double ContactEngine::SlavePartAtNode(const PassFrame& f, int v, const Located& hit) const {
-  // the two layers as RestoreNode shared the penetration: the node's law and crush, the face's corners'
-  const Stiffness& k = f.slave_model->VertexStiffness(v);
-  const double deflection = f.slave->delta[v].norm(), depth = std::max(hit.depth, 0.0);
+LayerShare ContactEngine::LayersAtNode(const PassFrame& f, int v, const Located& hit) const {
+  // the node's law and its crush at the step's start, the face's corners' law and mean crush
   const MasterLayer m = MasterLayerAt(*f.master_model, *f.master, f.master_model->mesh.triangles[hit.triangle]);
-  const double theta = LayerTheta(k, deflection, m.k, m.deflection, depth);
-  return SlavePartOfClosure(k, deflection, m.k, m.deflection, depth, theta, options_.null_band);
+  return ShareAtEqualPressure(f.slave_model->VertexStiffness(v), f.slave->delta[v].norm(), m.k, m.deflection,
+                              std::max(hit.depth, 0.0), options_.null_band);
 }
 
 ContactEngine::PassFrame ContactEngine::FrameOf(int master, int slave) {
@@ -656,7 +655,8 @@ double ContactEngine::DistanceToMaster(const PassFrame& f, int v, double radius,
 
 double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound,
                                   double free_gap, double dt,
-                                  ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding) {
+                                  ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding,
+                                  double* slave_part) {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
   const Stiffness& k = m.VertexStiffness(v);
@@ -673,6 +673,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   *new_delta = delta;
   bool touching = false;
   bool held = false;
+  std::optional<LayerShare> layers;       // the node's and a deformable master's layers, solved once
   double interface_pressure = INFINITY;  // the most the node presses against a deformable master
   // the master's outward normal in the slave frame: the node is pushed out of the master along it,
   // the way a frictionless surface pushes (no sideways drag whatever the search direction)
@@ -697,15 +698,13 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
     const double depth = std::max(hit->depth, 0.0);
     double push = depth;
     if (!f.master_model->rigid) {
-      const MasterLayer m = MasterLayerAt(*f.master_model, *f.master, f.master_model->mesh.triangles[hit->triangle]);
-      const double theta = LayerTheta(k, deflection, m.k, m.deflection, depth);
-      push = EqualPressureShare(k, deflection, m.k, m.deflection, depth, theta, options_.null_band);
+      layers = LayersAtNode(f, v, *hit);
+      push = layers->slave_push;
       // spec §5's purpose, one force through two layers in series: a node whose law is flat where the
       // share leaves it (null band, saturation) holds and carries the master layer's pressure, not its
       // own (pressing with its own A, a box ten times stiffer than the one striking it made the pair
       // twice as stiff: the striking box kept 2.5 in of crush where against a wall it keeps 6.95)
-      interface_pressure =
-          HeldLayerPressure(k, deflection + push, m.k, m.deflection + depth - push, options_.null_band);
+      interface_pressure = layers->max_pressure;
     }
     // spec §2 PushbackReduction (version 4 only): withhold a fraction, at most PUSHBACK_REDUCE_LIMIT
     if (options_.version == 4 && push > 0.0) {
@@ -791,6 +790,8 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       touching ? area * std::min(NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_),
                                  interface_pressure)
                : 0.0;
+  // spec §5: the slave's part of the interface's work where it touches a deformable master
+  if (touching && !f.master_model->rigid) *slave_part = (layers ? *layers : LayersAtNode(f, v, *hit)).slave_part;
 
   // work of the node law over the deflection change, then commit the new position
   *law_energy += area * NodeLawWork(k, deflection, new_deflection, peak, e, options_);

@@ -24,6 +24,26 @@ double LoadingSlope(const Stiffness& k, double delta, double null_band) {
   return k.B + x * (2.0 * k.C + 3.0 * x * k.D);
 }
 
+// the slave's part of a further closure with the layers at crushes c_slave and c_master (shared)
+double SlavePartAtCrushes(const Stiffness& slave, double c_slave, const Stiffness& master, double c_master,
+                          double theta, double null_band) {
+  // two hardening layers give way in inverse proportion to their slopes
+  const double k_slave = LoadingSlope(slave, c_slave, null_band);
+  const double k_master = LoadingSlope(master, c_master, null_band);
+  if (k_slave > 0.0 && k_master > 0.0) return k_master / (k_slave + k_master);
+  // a flat layer (null band, saturation) gives way alone once the other presses as hard as it holds;
+  // pressed less, it holds and the other gives way; both flat at one pressure: theta
+  const double p_slave = LoadingPressure(slave, c_slave, null_band);
+  const double p_master = LoadingPressure(master, c_master, null_band);
+  const double tolerance = kSamePressure * std::max(std::abs(p_slave), std::abs(p_master));
+  const bool slave_gives = k_slave <= 0.0 && p_slave <= p_master + tolerance;
+  const bool master_gives = k_master <= 0.0 && p_master <= p_slave + tolerance;
+  if (slave_gives && master_gives) return std::clamp(theta, 0.0, 1.0);
+  if (slave_gives) return 1.0;
+  if (master_gives) return 0.0;
+  return k_slave <= 0.0 ? 0.0 : 1.0;  // the flat one holds: the hardening one gives way
+}
+
 }  // namespace
 
 double CrushShare(double a_master, double b_master, double a_slave, double b_slave, double delta_total) {
@@ -78,22 +98,8 @@ double SlavePartOfClosure(const Stiffness& slave, double slave_deflection, const
                           double master_deflection, double depth, double theta, double null_band) {
   // the two layers' crush once the penetration is shared
   const double x = EqualPressureShare(slave, slave_deflection, master, master_deflection, depth, theta, null_band);
-  const double c_slave = slave_deflection + x, c_master = master_deflection + std::max(depth, 0.0) - x;
-  // two hardening layers give way in inverse proportion to their slopes
-  const double k_slave = LoadingSlope(slave, c_slave, null_band);
-  const double k_master = LoadingSlope(master, c_master, null_band);
-  if (k_slave > 0.0 && k_master > 0.0) return k_master / (k_slave + k_master);
-  // a flat layer (null band, saturation) gives way alone once the other presses as hard as it holds;
-  // pressed less, it holds and the other gives way; both flat at one pressure: theta
-  const double p_slave = LoadingPressure(slave, c_slave, null_band);
-  const double p_master = LoadingPressure(master, c_master, null_band);
-  const double tolerance = kSamePressure * std::max(std::abs(p_slave), std::abs(p_master));
-  const bool slave_gives = k_slave <= 0.0 && p_slave <= p_master + tolerance;
-  const bool master_gives = k_master <= 0.0 && p_master <= p_slave + tolerance;
-  if (slave_gives && master_gives) return std::clamp(theta, 0.0, 1.0);
-  if (slave_gives) return 1.0;
-  if (master_gives) return 0.0;
-  return k_slave <= 0.0 ? 0.0 : 1.0;  // the flat one holds: the hardening one gives way
+  return SlavePartAtCrushes(slave, slave_deflection + x, master, master_deflection + std::max(depth, 0.0) - x, theta,
+                            null_band);
 }
 
 double HeldLayerPressure(const Stiffness& slave, double slave_crush, const Stiffness& master, double master_crush,
@@ -102,6 +108,19 @@ double HeldLayerPressure(const Stiffness& slave, double slave_crush, const Stiff
   // plateau, and passes the other's pressure on; a hardening layer carries its own (the share equalised it)
   if (LoadingSlope(slave, slave_crush, null_band) > 0.0) return INFINITY;
   return LoadingPressure(master, master_crush, null_band);
+}
+
+LayerShare ShareAtEqualPressure(const Stiffness& slave, double slave_deflection, const Stiffness& master,
+                                double master_deflection, double depth, double null_band) {
+  // one equal-pressure solve; the part of a further closure and the pressure bound at its crushes
+  const double theta = LayerTheta(slave, slave_deflection, master, master_deflection, depth);
+  LayerShare out;
+  out.slave_push = EqualPressureShare(slave, slave_deflection, master, master_deflection, depth, theta, null_band);
+  const double c_slave = slave_deflection + out.slave_push;
+  const double c_master = master_deflection + std::max(depth, 0.0) - out.slave_push;
+  out.slave_part = SlavePartAtCrushes(slave, c_slave, master, c_master, theta, null_band);
+  out.max_pressure = HeldLayerPressure(slave, c_slave, master, c_master, null_band);
+  return out;
 }
 
 }  // namespace dymesh

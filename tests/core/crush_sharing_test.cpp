@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "dymesh/core/node_force.h"
 
@@ -127,6 +128,24 @@ TEST(HeldLayerPressure, FlatLayerPassesTheOtherSidesPressureOn) {
   EXPECT_DOUBLE_EQ(HeldLayerPressure(sat, 2.0, Law(300, 100), 1.3, kNullBand), 380.0);
   // a hardening slave: the share equalised the pressures, no bound
   EXPECT_EQ(HeldLayerPressure(Law(300, 100), 1.0, Law(300, 100), 1.0, kNullBand), INFINITY);
+}
+
+TEST(ShareAtEqualPressure, OneSolveGivesTheShareItsPartAndItsBound) {
+  // the three answers RestoreNode uses, from one equal-pressure solve: a hard slave in its band on a
+  // softer master (it holds: push 0, part 0, pressing with the master's pressure), and two hardening laws
+  for (const auto& [s, ds, m, dm, depth] : {std::tuple{Law(600, 100), 0.0, Law(300, 100), 1.0, 0.3},
+                                            std::tuple{Law(10, 3, 0.5, 0.01), 1.0, Law(8, 1, 0.2, 0.05), 3.0, 1.0}}) {
+    const double theta = LayerTheta(s, ds, m, dm, depth);
+    const double push = EqualPressureShare(s, ds, m, dm, depth, theta, kNullBand);
+    const LayerShare share = ShareAtEqualPressure(s, ds, m, dm, depth, kNullBand);
+    EXPECT_EQ(share.slave_push, push);
+    EXPECT_EQ(share.slave_part, SlavePartOfClosure(s, ds, m, dm, depth, theta, kNullBand));
+    EXPECT_EQ(share.max_pressure, HeldLayerPressure(s, ds + push, m, dm + depth - push, kNullBand));
+  }
+  const LayerShare held = ShareAtEqualPressure(Law(600, 100), 0.0, Law(300, 100), 1.0, 0.3, kNullBand);
+  EXPECT_EQ(held.slave_push, 0.0);
+  EXPECT_EQ(held.slave_part, 0.0);
+  EXPECT_DOUBLE_EQ(held.max_pressure, 300 + 100 * (1.3 - 0.5));
 }
 
 TEST(EqualPressureShare, NoDepthNoShare) {

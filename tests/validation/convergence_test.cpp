@@ -186,9 +186,9 @@ TEST(Convergence, Oblique45Degrees) { ExpectConverged("car_to_car_oblique.json",
 // +-0.01 in moves delta-V by 1.4 % (one standard deviation over 16 starts) and parts the cars within
 // 0.5 s in 4-8 of 16 starts at every time step and mesh. One run is a draw from that spread. (Held
 // on the demo's own start until a layer held in its null band passed the other side's pressure on:
-// that start then rubs on to 1.97 s, its neighbours 0.01 in away part at 0.3-0.5 s.) The bar is held on the mean over eight starts (standard error 0.5 %), each run 2 s long, with at
-// least six of the eight parting within it (measured 7-8 at each variant; the rest are marked
-// ended_in_contact)
+// that start then rubs on to 1.97 s, its neighbours 0.01 in away part at 0.3-0.5 s.) The bar is held
+// on the mean over eight starts (standard error 0.5 %), each run 2 s long, with at least six of the
+// eight parting within it (measured 7-8 at each variant; the rest are marked ended_in_contact)
 TEST(Convergence, OffsetFrontal) {
   const Scenario demo = Demo("car_to_car_offset.json");
   auto band = [&](const std::function<Outcome(Scenario)>& run) {

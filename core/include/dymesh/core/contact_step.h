@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "dymesh/core/body.h"
+#include "dymesh/core/crush_sharing.h"
 #include "dymesh/core/locator.h"
 #include "dymesh/core/options.h"
 #include "dymesh/core/rigid_body.h"
@@ -194,13 +195,15 @@ class ContactEngine {
   // step_start_deflection; the new Delta goes to *new_delta (committed later). Without a hit:
   // `closing_unfound`, the bodies still close on the node (along its last contact normal, or its crush
   // while it holds a spring), and `free_gap`, how far the node may spring back (the distance to a
-  // rigid master's surface). *holding: the node was held with a spring still stored (spec §6)
+  // rigid master's surface). *holding: the node was held with a spring still stored (spec §6);
+  // *slave_part: where it touches a deformable master, its part of a further closure (spec §5)
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
-                     ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding);
+                     ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding,
+                     double* slave_part);
   void CommitPending(int body);
-  // the slave's part of a further closure at a touching node against a deformable master (spec §5:
-  // two layers in series at equal pressure, SlavePartOfClosure)
-  double SlavePartAtNode(const PassFrame& f, int v, const Located& hit) const;
+  // slave node v's layer and a deformable master's at `hit`, sharing its penetration at equal pressure
+  // (spec §5), from the node's crush at the step's start
+  LayerShare LayersAtNode(const PassFrame& f, int v, const Located& hit) const;
   // spec §1 swapping against a rigid body: its nodes, as slaves, push the deformable body's faces they
   // crossed between the nodes that `engaged` holds on it (a pole meeting a coarse panel between its
   // nodes); the deformable body's face corners take the crush. Returns the loads with the rigid body as

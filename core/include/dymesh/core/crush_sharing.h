@@ -40,4 +40,13 @@ double SlavePartOfClosure(const Stiffness& slave, double slave_deflection, const
 double HeldLayerPressure(const Stiffness& slave, double slave_crush, const Stiffness& master, double master_crush,
                          double null_band);
 
+/// A slave node's layer and a master face's layer sharing a penetration (spec §5), solved once:
+struct LayerShare {
+  double slave_push = 0.0;    ///< [m] the slave's crush increment (EqualPressureShare, theta LayerTheta)
+  double slave_part = 0.0;    ///< its part of a further closure (SlavePartOfClosure)
+  double max_pressure = 0.0;  ///< [Pa] the most it presses (HeldLayerPressure)
+};
+LayerShare ShareAtEqualPressure(const Stiffness& slave, double slave_deflection, const Stiffness& master,
+                                double master_deflection, double depth, double null_band);
+
 }  // namespace dymesh
