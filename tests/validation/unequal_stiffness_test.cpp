@@ -1,5 +1,6 @@
 // Two deformable boxes of unequal stiffness in line: crush shared at equal pressure (spec §5's
-// purpose, SMAC's rule), against the closed form, in either body order and with 2, 3 or 4 passes.
+// purpose, SMAC's rule), against the closed form, in every search, either body order and with 2, 3 or 4
+// passes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -48,13 +49,15 @@ double ExpectedSoftShare(Law2D soft, Law2D hard, double work_per_width) {
 }
 
 // soft and hard boxes head-on at 15 mph each, fronts 1 in apart; `soft_first` picks the body order
-Scenario InLine(Law2D soft, Law2D hard, bool soft_first, int passes) {
+Scenario InLine(Law2D soft, Law2D hard, bool soft_first, int passes,
+               SearchDirection search = SearchDirection::kVelocity) {
   Scenario s;
   s.file = "(unequal stiffness test)";
   s.units = UnitSystem::kUS;
   s.time_step = 0.0005;
   s.duration = 0.4;
   s.contact.passes_per_step = passes;
+  s.contact.search_direction = search;
   BodySpec a = testing::BoxVehicle("soft", 180, 66, 30, {1, 22, 10}, 3000, soft.a, soft.b, kHeightIn, 0.0);
   a.initial.velocity = Vec3(15 * u::kMph, 0, 0);
   BodySpec b = testing::BoxVehicle("hard", 180, 66, 30, {1, 22, 10}, 3000, hard.a, hard.b, kHeightIn, 0.0);
@@ -65,12 +68,20 @@ Scenario InLine(Law2D soft, Law2D hard, bool soft_first, int passes) {
   return s;
 }
 
+// how closely the node laws account for the contact work: 2 %, the energy bar (measured
+// 0.997-0.998 in every search, pass count and order). Until a touching node's faces were measured from
+// the master's plane at least the contact tolerance beyond it, the later passes of a pair where one side
+// held in its null band counted that side's flush faces by the sign of 1e-14 in: with 3 and 4 passes the
+// node laws ran 1.02-1.06 over the contact work, and 1.39-1.52 with the polygon-normal search, whose
+// boxes then ended in contact
+constexpr double kNodeLawBar = 0.02;
+
 struct Crush {
   double soft, hard;                // [in] largest dynamic crush of each
   double soft_work, hard_work;      // [in lb] each side's crush energy (the ledger's, split)
 };
 
-Crush RunPair(const Scenario& scenario, double law_bar) {
+Crush RunPair(const Scenario& scenario) {
   auto device = std::make_shared<const accel::EmbreeDevice>();
   Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
@@ -81,42 +92,44 @@ Crush RunPair(const Scenario& scenario, double law_bar) {
     (b.name == "soft" ? c.soft_work : c.hard_work) = b.crush_energy / (u::kPoundForce * u::kInch);
   }
   EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02);
-  // flat fronts meet flat fronts: the node laws account for the contact work within `law_bar`
-  EXPECT_NEAR(s.law_energy, s.crush_energy, law_bar * s.crush_energy);
+  // flat fronts meet flat fronts: the node laws account for the contact work
+  EXPECT_NEAR(s.law_energy, s.crush_energy, kNodeLawBar * s.crush_energy);
   std::printf("[measured] node law / contact work %.4f\n", s.law_energy / s.crush_energy);
   return c;
 }
 
-// how closely the node laws account for the contact work: 2 % (measured 0.997-1.003) with the
-// default 2 passes, or equal A. Where A differs, 3 and 4 passes give 1.03-1.05 (the odd pass's and
-// the later pairs' nodes against a layer held in its null band: not traced, a known limit in the
-// README), held to 5 %. Until a layer held in its null band passed the other side's pressure on, its
-// uncrushed nodes reported their own A (4 % over with 2 passes); and a second pass pair used to count
-// only the nodes the first pair's interpolation gap happened to miss (7 % over with 3 passes, 17 % with 4)
-double NodeLawBar(Law2D soft, Law2D hard, int passes) { return soft.a == hard.a || passes == 2 ? 0.02 : 0.05; }
+// the searches the equal-pressure rows run through (each with 2, 3 and 4 passes, either body order)
+const SearchDirection kSearches[] = {SearchDirection::kVelocity, SearchDirection::kLocalAverageNormal,
+                                     SearchDirection::kPolyNormal};
 
 // equal pressure at maximum engagement: a_s + b_s (C_s - d0) = a_h + b_h (C_h - d0), both past d0
-void ExpectEqualPressure(Law2D soft, Law2D hard, const char* label) {
-  for (int passes : {2, 3, 4}) {
-    for (bool soft_first : {true, false}) {
-      const Crush c = RunPair(InLine(soft, hard, soft_first, passes), NodeLawBar(soft, hard, passes));
-      const double f_soft = soft.ForcePerWidth(c.soft), f_hard = hard.ForcePerWidth(c.hard);
-      // 5 %: the bar for Newton's third law per unit width (measured under 0.5 %)
-      EXPECT_NEAR(f_soft, f_hard, 0.05 * f_hard) << label << " passes " << passes << " soft first " << soft_first;
-      // the closed-form crush of the soft side given the hard side's: C_s = d0 + (f_h - a_s) / b_s
-      const double expected_soft = kNullBandIn + (f_hard - soft.a) / soft.b;
-      EXPECT_NEAR(c.soft, expected_soft, 0.10 * expected_soft) << label;
-      // each side's part of the crush energy, against the layers' closed form at the measured total;
-      // 2 %, the energy bar (measured within 0.3 %; where A differs +1.8 to +2.2 % until the
-      // harder side's uncrushed nodes stopped pressing with their own A)
-      const double total = c.soft_work + c.hard_work;
-      const double expected_share = ExpectedSoftShare(soft, hard, total / kWidthIn);
-      EXPECT_NEAR(c.soft_work / total, expected_share, 0.02 * expected_share) << label;
-      std::printf("[measured] %s, passes %d, soft first %d: crush %.3f / %.3f in, force per width %.1f / %.1f lb/in, "
-                  "soft side's crush energy %.4f of %.0f in lb (closed form %.4f)\n",
-                  label, passes, soft_first, c.soft, c.hard, f_soft, f_hard, c.soft_work / total, total, expected_share);
-    }
-  }
+void ExpectEqualPressureIn(const Scenario& scenario, Law2D soft, Law2D hard, const std::string& label) {
+  const Crush c = RunPair(scenario);
+  const double f_soft = soft.ForcePerWidth(c.soft), f_hard = hard.ForcePerWidth(c.hard);
+  // 5 %: the bar for Newton's third law per unit width (measured under 0.5 %)
+  EXPECT_NEAR(f_soft, f_hard, 0.05 * f_hard) << label;
+  // the closed-form crush of the soft side given the hard side's: C_s = d0 + (f_h - a_s) / b_s
+  const double expected_soft = kNullBandIn + (f_hard - soft.a) / soft.b;
+  EXPECT_NEAR(c.soft, expected_soft, 0.10 * expected_soft) << label;
+  // each side's part of the crush energy, against the layers' closed form at the measured total;
+  // 2 %, the energy bar (measured within 0.3 %; where A differs +1.8 to +2.2 % until the
+  // harder side's uncrushed nodes stopped pressing with their own A)
+  const double total = c.soft_work + c.hard_work;
+  const double expected_share = ExpectedSoftShare(soft, hard, total / kWidthIn);
+  EXPECT_NEAR(c.soft_work / total, expected_share, 0.02 * expected_share) << label;
+  std::printf("[measured] %s: crush %.3f / %.3f in, force per width %.1f / %.1f lb/in, soft side's crush energy "
+              "%.4f of %.0f in lb (closed form %.4f)\n",
+              label.c_str(), c.soft, c.hard, f_soft, f_hard, c.soft_work / total, total, expected_share);
+}
+
+// the same in every search, with 2, 3 and 4 passes, either body order
+void ExpectEqualPressure(Law2D soft, Law2D hard, const std::string& label) {
+  for (SearchDirection search : kSearches)
+    for (int passes : {2, 3, 4})
+      for (bool soft_first : {true, false})
+        ExpectEqualPressureIn(InLine(soft, hard, soft_first, passes, search), soft, hard,
+                              label + ", search " + std::to_string(static_cast<int>(search)) + ", passes " +
+                                  std::to_string(passes) + ", soft first " + std::to_string(soft_first));
 }
 
 TEST(UnequalStiffness, DoubleBSharesAtEqualPressure) {
@@ -134,7 +147,8 @@ TEST(UnequalStiffness, DoubleAsharesAtEqualPressure) {
 // takes the relative kinetic energy (e = 0: the boxes end at their common velocity),
 // ½ (m/2) v² = 45,130 ft lbf over the 66 in front: a_s d0 + (f² - a_s²) / (2 b_s) = W / width gives
 // f = 1304 lb/in and C_s = d0 + (f - a_s) / b_s = 10.54 in. 5 % (the bar of the equal-pressure rows'
-// crush; measured -0.2 % with 2 passes in every variant below, 0.0 % at dt/2, +3 % with 3 passes).
+// crush; measured -0.2 % in every search, pass count, order and variant below, 0.0 % at dt/2; +3 % with
+// 3 passes until a face pressed flush on the master counted whole).
 // Pressing with its own A, the stiff side made the pair twice as stiff: the README's 30 mph case with
 // e = 0.1 crushed the softer side 2.8 in for 7.7
 TEST(UnequalStiffness, LayerHeldInItsNullBandActsAsAWall) {
@@ -144,30 +158,30 @@ TEST(UnequalStiffness, LayerHeldInItsNullBandActsAsAWall) {
       0.5 * (3000.0 / 2 * u::kPoundMass) * std::pow(30 * u::kMph, 2) / (u::kPoundForce * u::kInch);
   const double f = std::sqrt(soft.a * soft.a + 2 * soft.b * (relative_ke / kWidthIn - soft.a * kNullBandIn));
   const double expected_soft = kNullBandIn + (f - soft.a) / soft.b;
-  auto check = [&](const std::string& label, const Scenario& scenario, int passes) {
-    const Crush c = RunPair(scenario, NodeLawBar(soft, hard, passes));
+  auto check = [&](const std::string& label, const Scenario& scenario) {
+    const Crush c = RunPair(scenario);
     EXPECT_NEAR(c.soft, expected_soft, 0.05 * expected_soft) << label;
     EXPECT_LT(c.hard, 0.05) << label << ": the stiff side holds [in]";
     EXPECT_NEAR(c.soft_work / (c.soft_work + c.hard_work), 1.0, 0.01) << label;
     std::printf("[measured] stiff side held, %s: crush %.3f / %.3f in (closed form %.3f / 0)\n", label.c_str(), c.soft,
                 c.hard, expected_soft);
   };
-  for (int passes : {2, 3}) {
-    for (bool soft_first : {true, false}) {
-      check("passes " + std::to_string(passes) + ", soft first " + std::to_string(soft_first),
-            InLine(soft, hard, soft_first, passes), passes);
+  for (SearchDirection search : kSearches) {
+    for (int passes : {2, 3, 4}) {
+      for (bool soft_first : {true, false}) {
+        check("search " + std::to_string(static_cast<int>(search)) + ", passes " + std::to_string(passes) +
+                  ", soft first " + std::to_string(soft_first),
+              InLine(soft, hard, soft_first, passes, search));
+      }
     }
   }
-  // the same across the time step, the searches, the stop rule, the soft mesh and the frame (2 passes)
+  // the same across the time step, the stop rule, the soft mesh and the frame (2 passes)
   auto variant = [&](const std::string& label, const std::function<void(Scenario*)>& change) {
     Scenario s = InLine(soft, hard, true, 2);
     change(&s);
-    check(label, s, 2);
+    check(label, s);
   };
   variant("dt/2", [](Scenario* s) { s->time_step /= 2; });
-  variant("local average normal",
-          [](Scenario* s) { s->contact.search_direction = SearchDirection::kLocalAverageNormal; });
-  variant("polygon normal", [](Scenario* s) { s->contact.search_direction = SearchDirection::kPolyNormal; });
   variant("stop after one", [](Scenario* s) { s->contact.stop_rule = StopRule::kAfterOne; });
   variant("soft box meshed 1:4", [](Scenario* s) {
     for (BodySpec& b : s->bodies)
