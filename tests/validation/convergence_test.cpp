@@ -231,8 +231,8 @@ TEST(Convergence, OffsetFrontal) {
 }
 
 // the same bar across the contact options, each run balancing its energy within 2 %: with 3 and 4
-// passes and the stop-after-one rule the side and oblique demos part within 0.5 s (before held nodes released their
-// spring the side and offset demos touched until 0.52 and 1.63 s). The local-average-normal and
+// passes and the stop-after-one rule the side and oblique demos part within 0.5 s (before held nodes
+// released their spring the side and offset demos touched until 0.52 and 1.63 s). The local-average-normal and
 // polygon-normal searches keep the oblique in contact past the demo's 0.8 s (the first parted at
 // 0.783 s while its normal was area-weighted), and the side and offset demos too: README known limits
 Scenario WithOptions(const Scenario& base, const std::function<void(ContactOptions*)>& change) {
