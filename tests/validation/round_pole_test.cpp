@@ -268,8 +268,9 @@ TEST(RoundPole, NodesStayInTheBoxForBothSearches) {
 // int_0^C int_shadow (A + B d(y)) dy dc gives the crush C on the axis (midpoint sums, 1e-3 in: C to
 // 1e-3 in). The box's deepest node is on the axis (centred) or beside it: its max crush is C
 double ColumnClosedFormCrushIn() {
-  const double mass = 3000.0 / 386.0886, speed = 176.0, radius = 6.0, a = 300.0, b = 100.0;  // US, in/s
-  const double energy = 0.5 * mass * speed * speed;
+  const double radius = 6.0, a = 300.0, b = 100.0;  // [in], [lb/in], [lb/in^2]
+  // [lbf in] the 3000 lb box at 10 mph
+  const double energy = 0.5 * 3000.0 * u::kPoundMass * std::pow(10.0 * u::kMph, 2) / (u::kPoundForce * u::kInch);
   auto force = [&](double c) {
     const double half = c >= radius ? radius : std::sqrt(radius * radius - (radius - c) * (radius - c));
     const int n = 400;
