@@ -44,6 +44,19 @@ double SlavePartAtCrushes(const Stiffness& slave, double c_slave, const Stiffnes
   return k_slave <= 0.0 ? 0.0 : 1.0;  // the flat one holds: the hardening one gives way
 }
 
+// one equal-pressure solve with the first estimate `theta`; the part of a further closure and the
+// pressure bound at the crushes it leaves
+LayerShare ShareWithTheta(const Stiffness& slave, double slave_deflection, const Stiffness& master,
+                          double master_deflection, double depth, double theta, double null_band) {
+  LayerShare out;
+  out.slave_push = EqualPressureShare(slave, slave_deflection, master, master_deflection, depth, theta, null_band);
+  const double c_slave = slave_deflection + out.slave_push;
+  const double c_master = master_deflection + std::max(depth, 0.0) - out.slave_push;
+  out.slave_part = SlavePartAtCrushes(slave, c_slave, master, c_master, theta, null_band);
+  out.max_pressure = HeldLayerPressure(slave, c_slave, master, c_master, null_band);
+  return out;
+}
+
 }  // namespace
 
 double CrushShare(double a_master, double b_master, double a_slave, double b_slave, double delta_total) {
@@ -96,10 +109,7 @@ double LayerTheta(const Stiffness& slave, double slave_deflection, const Stiffne
 
 double SlavePartOfClosure(const Stiffness& slave, double slave_deflection, const Stiffness& master,
                           double master_deflection, double depth, double theta, double null_band) {
-  // the two layers' crush once the penetration is shared
-  const double x = EqualPressureShare(slave, slave_deflection, master, master_deflection, depth, theta, null_band);
-  return SlavePartAtCrushes(slave, slave_deflection + x, master, master_deflection + std::max(depth, 0.0) - x, theta,
-                            null_band);
+  return ShareWithTheta(slave, slave_deflection, master, master_deflection, depth, theta, null_band).slave_part;
 }
 
 double HeldLayerPressure(const Stiffness& slave, double slave_crush, const Stiffness& master, double master_crush,
@@ -112,15 +122,8 @@ double HeldLayerPressure(const Stiffness& slave, double slave_crush, const Stiff
 
 LayerShare ShareAtEqualPressure(const Stiffness& slave, double slave_deflection, const Stiffness& master,
                                 double master_deflection, double depth, double null_band) {
-  // one equal-pressure solve; the part of a further closure and the pressure bound at its crushes
   const double theta = LayerTheta(slave, slave_deflection, master, master_deflection, depth);
-  LayerShare out;
-  out.slave_push = EqualPressureShare(slave, slave_deflection, master, master_deflection, depth, theta, null_band);
-  const double c_slave = slave_deflection + out.slave_push;
-  const double c_master = master_deflection + std::max(depth, 0.0) - out.slave_push;
-  out.slave_part = SlavePartAtCrushes(slave, c_slave, master, c_master, theta, null_band);
-  out.max_pressure = HeldLayerPressure(slave, c_slave, master, c_master, null_band);
-  return out;
+  return ShareWithTheta(slave, slave_deflection, master, master_deflection, depth, theta, null_band);
 }
 
 }  // namespace dymesh

@@ -100,9 +100,18 @@ Crush RunPair(const Scenario& scenario) {
   return c;
 }
 
-// the searches the equal-pressure rows run through (each with 2, 3 and 4 passes, either body order)
-const SearchDirection kSearches[] = {SearchDirection::kVelocity, SearchDirection::kLocalAverageNormal,
-                                     SearchDirection::kPolyNormal};
+// the in-line pair in every search (velocity, local average normal, polygon normal), with 2, 3 and 4
+// passes, either body order: `check` gets each labelled scenario
+void ForEverySearchPassCountAndOrder(Law2D soft, Law2D hard,
+                                     const std::function<void(const std::string&, const Scenario&)>& check) {
+  for (SearchDirection search : {SearchDirection::kVelocity, SearchDirection::kLocalAverageNormal,
+                                 SearchDirection::kPolyNormal})
+    for (int passes : {2, 3, 4})
+      for (bool soft_first : {true, false})
+        check("search " + std::to_string(static_cast<int>(search)) + ", passes " + std::to_string(passes) +
+                  ", soft first " + std::to_string(soft_first),
+              InLine(soft, hard, soft_first, passes, search));
+}
 
 // equal pressure at maximum engagement: a_s + b_s (C_s - d0) = a_h + b_h (C_h - d0), both past d0
 void ExpectEqualPressureIn(const Scenario& scenario, Law2D soft, Law2D hard, const std::string& label) {
@@ -126,12 +135,9 @@ void ExpectEqualPressureIn(const Scenario& scenario, Law2D soft, Law2D hard, con
 
 // the same in every search, with 2, 3 and 4 passes, either body order
 void ExpectEqualPressure(Law2D soft, Law2D hard, const std::string& label) {
-  for (SearchDirection search : kSearches)
-    for (int passes : {2, 3, 4})
-      for (bool soft_first : {true, false})
-        ExpectEqualPressureIn(InLine(soft, hard, soft_first, passes, search), soft, hard,
-                              label + ", search " + std::to_string(static_cast<int>(search)) + ", passes " +
-                                  std::to_string(passes) + ", soft first " + std::to_string(soft_first));
+  ForEverySearchPassCountAndOrder(soft, hard, [&](const std::string& option, const Scenario& scenario) {
+    ExpectEqualPressureIn(scenario, soft, hard, label + ", " + option);
+  });
 }
 
 TEST(UnequalStiffness, DoubleBSharesAtEqualPressure) {
@@ -186,15 +192,7 @@ TEST(UnequalStiffness, LayerHeldInItsNullBandActsAsAWall) {
     std::printf("[measured] stiff side held, %s: crush %.3f / %.3f in (closed form %.3f / 0)\n", label.c_str(), c.soft,
                 c.hard, expected_soft);
   };
-  for (SearchDirection search : kSearches) {
-    for (int passes : {2, 3, 4}) {
-      for (bool soft_first : {true, false}) {
-        check("search " + std::to_string(static_cast<int>(search)) + ", passes " + std::to_string(passes) +
-                  ", soft first " + std::to_string(soft_first),
-              InLine(soft, hard, soft_first, passes, search));
-      }
-    }
-  }
+  ForEverySearchPassCountAndOrder(soft, hard, check);
   // the same across the time step, the stop rule, the soft mesh and the frame (2 passes)
   auto variant = [&](const std::string& label, const std::function<void(Scenario*)>& change) {
     Scenario s = InLine(soft, hard, true, 2);
