@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -104,12 +104,15 @@ Crush RunPair(const Scenario& scenario) {
 // passes, either body order: `check` gets each labelled scenario
 void ForEverySearchPassCountAndOrder(Law2D soft, Law2D hard,
                                      const std::function<void(const std::string&, const Scenario&)>& check) {
-  for (SearchDirection search : {SearchDirection::kVelocity, SearchDirection::kLocalAverageNormal,
-                                 SearchDirection::kPolyNormal})
+  const std::pair<const char*, SearchDirection> searches[] = {
+      {"velocity", SearchDirection::kVelocity},
+      {"local_average_normal", SearchDirection::kLocalAverageNormal},
+      {"poly_normal", SearchDirection::kPolyNormal}};
+  for (const auto& [name, search] : searches)
     for (int passes : {2, 3, 4})
       for (bool soft_first : {true, false})
-        check("search " + std::to_string(static_cast<int>(search)) + ", passes " + std::to_string(passes) +
-                  ", soft first " + std::to_string(soft_first),
+        check(std::string(name) + " search, passes " + std::to_string(passes) + ", soft first " +
+                  std::to_string(soft_first),
               InLine(soft, hard, soft_first, passes, search));
 }
 
@@ -187,10 +190,14 @@ TEST(UnequalStiffness, LayerHeldInItsNullBandActsAsAWall) {
   auto check = [&](const std::string& label, const Scenario& scenario) {
     const Crush c = RunPair(scenario);
     EXPECT_NEAR(c.soft, expected_soft, 0.05 * expected_soft) << label;
+    // the stiff side takes no crush and no crush work: a tenth of the null band [in] and 1 % of the
+    // work, round-off's room for a node the sibling pass left a hair inside (measured 0.000 in and a
+    // soft part of 1.0000)
     EXPECT_LT(c.hard, 0.05) << label << ": the stiff side holds [in]";
-    EXPECT_NEAR(c.soft_work / (c.soft_work + c.hard_work), 1.0, 0.01) << label;
-    std::printf("[measured] stiff side held, %s: crush %.3f / %.3f in (closed form %.3f / 0)\n", label.c_str(), c.soft,
-                c.hard, expected_soft);
+    const double soft_part = c.soft_work / (c.soft_work + c.hard_work);
+    EXPECT_NEAR(soft_part, 1.0, 0.01) << label;
+    std::printf("[measured] stiff side held, %s: crush %.3f / %.3f in (closed form %.3f / 0), soft side's crush "
+                "energy %.4f\n", label.c_str(), c.soft, c.hard, expected_soft, soft_part);
   };
   ForEverySearchPassCountAndOrder(soft, hard, check);
   // the same across the time step, the stop rule, the soft mesh and the frame (2 passes)
