@@ -99,9 +99,12 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
   };
   const ensemble::RunCounts c = RunOnRanks(spec, options);
   if (c.total == 0 && !c.finished) return kExitOk;  // an MPI worker rank: the master reports
-  out << Format("%s: %d samples (shard %d/%d): %d run now, %d resumed, %d failed (excluded from the statistics), "
-                "%d kept with warnings\n",
-                request.spec_path.c_str(), c.total, options.shard, options.shards, c.ran, c.resumed, c.failed, c.warned);
+  // a sample out of the statistics either did not complete (in contact at the end, non-finite, refused,
+  // timed out: status_counts) or completed with a warning that voids it (voided_by_warning)
+  out << Format("%s: %d samples (shard %d/%d): %d run now, %d resumed, %d excluded from the statistics (%d not "
+                "complete, %d voided by a warning), %d kept with warnings\n",
+                request.spec_path.c_str(), c.total, options.shard, options.shards, c.ran, c.resumed, c.excluded,
+                c.excluded - c.voided, c.voided, c.warned);
   if (!c.finished) {
     err << "interrupted: the samples recorded so far are kept in " << request.out_dir
         << "/samples.journal.jsonl; run the same command again to resume\n";
@@ -109,7 +112,7 @@ int EnsembleCommand(const EnsembleRequest& request, const std::function<int()>& 
   }
   out << "outputs in " << request.out_dir << ": samples.jsonl, ensemble.json, report.html\n";
   // statistics of no sample are no result: say so in the exit code
-  if (c.failed == c.total) {
+  if (c.excluded == c.total) {
     err << "warning: no sample reached the statistics (every one failed or was voided by a warning; see "
            "status_counts and voided_by_warning in ensemble.json): ensemble.json holds no outputs\n";
     return kExitWarnings;

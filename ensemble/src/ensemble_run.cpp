@@ -191,7 +191,8 @@ class Collector {
     }
     counts_.ran = static_cast<int>(mine.size()) - counts_.resumed;
     for (const auto& [index, r] : mine) {
-      counts_.failed += !r.in_statistics();
+      counts_.excluded += !r.in_statistics();
+      counts_.voided += !r.in_statistics() && r.status == RunStatusName(RunStatus::kComplete);
       counts_.warned += r.in_statistics() && !r.warnings.empty();
     }
     counts_.finished = static_cast<int>(mine.size()) == counts_.total;

@@ -166,7 +166,8 @@ TEST_F(Ensemble, SamplesOverTheTimeLimitAreRecordedAndRunAgainOnResume) {
   const fs::path out = dir_ / "limited";
   const ProcessResult limited = Dymesh({"ensemble", spec, "--quiet", "--sample-time-limit", "1e-6", "--out", out.string()});
   ASSERT_EQ(limited.exit_code, 3) << limited.err;
-  EXPECT_NE(limited.out.find("4 failed"), std::string::npos) << limited.out;
+  EXPECT_NE(limited.out.find("4 excluded from the statistics (4 not complete, 0 voided by a warning)"), std::string::npos)
+      << limited.out;
   EXPECT_NE(limited.err.find("no sample reached the statistics"), std::string::npos) << limited.err;
   const std::string first = Line(out / "samples.jsonl", 0);
   EXPECT_NE(first.find("\"status\":\"timed_out\""), std::string::npos) << first;
@@ -174,14 +175,14 @@ TEST_F(Ensemble, SamplesOverTheTimeLimitAreRecordedAndRunAgainOnResume) {
   EXPECT_NE(ReadFile(out / "report.html").find("timed_out"), std::string::npos);
   const ProcessResult again = Dymesh({"ensemble", spec, "--quiet", "--out", out.string()});
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_NE(again.out.find("4 run now, 0 resumed, 0 failed"), std::string::npos) << again.out;
+  EXPECT_NE(again.out.find("4 run now, 0 resumed, 0 excluded"), std::string::npos) << again.out;
   EXPECT_EQ(ReadFile(out / "samples.jsonl"), ReadFile(dir_ / "fresh" / "samples.jsonl"));
   EXPECT_EQ(ReadFile(out / "ensemble.json"), ReadFile(dir_ / "fresh" / "ensemble.json"));
   // a limit that is not a positive number of seconds is refused before any sample
   EXPECT_EQ(Dymesh({"ensemble", spec, "--sample-time-limit", "0", "--out", (dir_ / "zero").string()}).exit_code, 2);
 }
 
-TEST_F(Ensemble, SamplesWhoseBodiesPassedThroughAreFailedAndLeftOutOfTheStatistics) {
+TEST_F(Ensemble, SamplesWhoseBodiesPassedThroughAreVoidedAndLeftOutOfTheStatistics) {
   // the coarse boxes head-on: in line they crush and part (delta-V ~33 mph each); 20 in apart
   // laterally they pass through each other (the trust test's case, run warning passed_through, status
   // complete). The Latin hypercube gives the two offsets 4 samples each.
@@ -191,7 +192,8 @@ TEST_F(Ensemble, SamplesWhoseBodiesPassedThroughAreFailedAndLeftOutOfTheStatisti
     "distribution": {"discrete": {"values": [0, 20]}}}]})");
   const ProcessResult r = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "out").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("8 run now, 0 resumed, 4 failed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("8 run now, 0 resumed, 4 excluded from the statistics (0 not complete, 4 voided by a warning)"),
+            std::string::npos) << r.out;
   // every offset sample is recorded complete with the warning; the in-line ones are clean
   for (int i = 0; i < 8; ++i) {
     const nlohmann::json s = nlohmann::json::parse(Line(dir_ / "out" / "samples.jsonl", i));
@@ -223,7 +225,7 @@ TEST_F(Ensemble, SamplesWithWarningsThatLeaveResultsStandAreKeptAndCounted) {
     "distribution": {"discrete": {"values": [0.0005, 0.004]}}}]})");
   const ProcessResult r = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "out").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("6 run now, 0 resumed, 0 failed (excluded from the statistics), 3 kept with warnings"),
+  EXPECT_NE(r.out.find("6 run now, 0 resumed, 0 excluded from the statistics (0 not complete, 0 voided by a warning), 3 kept with warnings"),
             std::string::npos) << r.out;
   std::vector<int> coarse;
   for (int i = 0; i < 6; ++i) {

@@ -20,7 +20,8 @@ struct RunCounts {
   int total = 0;       ///< samples of this shard
   int resumed = 0;     ///< found already recorded in the folder
   int ran = 0;         ///< run now
-  int failed = 0;      ///< not in the statistics (SampleRecord::in_statistics)
+  int excluded = 0;    ///< not in the statistics (SampleRecord::in_statistics): not complete, or voided
+  int voided = 0;      ///< of those, complete but with a warning that voids the results
   int warned = 0;      ///< in the statistics, with warnings that leave the results standing
   bool finished = false;  ///< every sample of the shard has a record (samples.jsonl and ensemble.json written)
 };
