@@ -166,8 +166,8 @@ TEST_F(Ensemble, SamplesOverTheTimeLimitAreRecordedAndRunAgainOnResume) {
   const fs::path out = dir_ / "limited";
   const ProcessResult limited = Dymesh({"ensemble", spec, "--quiet", "--sample-time-limit", "1e-6", "--out", out.string()});
   ASSERT_EQ(limited.exit_code, 3) << limited.err;
-  EXPECT_NE(limited.out.find("4 excluded from the statistics (4 not complete, 0 voided by a warning)"), std::string::npos)
-      << limited.out;
+  EXPECT_NE(limited.out.find("4 excluded from the statistics (4 not complete, 0 voided by a warning)"),
+            std::string::npos) << limited.out;
   EXPECT_NE(limited.err.find("no sample reached the statistics"), std::string::npos) << limited.err;
   const std::string first = Line(out / "samples.jsonl", 0);
   EXPECT_NE(first.find("\"status\":\"timed_out\""), std::string::npos) << first;
@@ -225,7 +225,8 @@ TEST_F(Ensemble, SamplesWithWarningsThatLeaveResultsStandAreKeptAndCounted) {
     "distribution": {"discrete": {"values": [0.0005, 0.004]}}}]})");
   const ProcessResult r = Dymesh({"ensemble", spec, "--quiet", "--out", (dir_ / "out").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("6 run now, 0 resumed, 0 excluded from the statistics (0 not complete, 0 voided by a warning), 3 kept with warnings"),
+  EXPECT_NE(r.out.find("6 run now, 0 resumed, 0 excluded from the statistics (0 not complete, 0 voided by a warning), "
+                       "3 kept with warnings"),
             std::string::npos) << r.out;
   std::vector<int> coarse;
   for (int i = 0; i < 6; ++i) {
