@@ -27,7 +27,9 @@ bool SummaryFinite(const Summary& s) {
                           s.energy_balance_error + s.closing_speed + s.separation_speed) &&
             s.momentum_before.allFinite() && s.momentum_after.allFinite();
   for (const PairSummary& p : s.pairs)
-    ok = ok && std::isfinite(p.closing_speed + p.separation_speed + p.point_closing_speed + p.point_separation_speed) &&
+    ok = ok && std::isfinite(p.closing_speed + p.separation_speed + p.point_closing_speed + p.point_separation_speed +
+                             p.impulse_ratio + p.yaw_rate_change[0] + p.yaw_rate_change[1] +
+                             p.friction_yaw_rate_change[0] + p.friction_yaw_rate_change[1]) &&
          p.direction.allFinite();
   for (const BodySummary& b : s.bodies)
     ok = ok && std::isfinite(b.delta_v + b.pdof_deg + b.peak_accel + b.average_accel + b.max_crush +

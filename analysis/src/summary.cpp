@@ -77,6 +77,19 @@ Vec3 PointVelocity(const RigidState& now, const RigidState& at, const Vec3& r) {
   return now.velocity + (rotation * now.omega).cross(rotation * (at.Rotation().transpose() * r));
 }
 
+// [rad/s] the yaw rate an angular impulse about the vertical gives a body, over its yaw inertia; none
+// for a body that does not move
+double YawRateChange(const Simulation& sim, int body, const Vec3& angular_impulse) {
+  if (sim.scenario().bodies[body].motion == MotionModel::kFixed) return 0.0;
+  return angular_impulse.z() / sim.engine().model(body).inertia(2, 2);
+}
+
+// the impulse's part across the unit normal over its part along it (0 without a normal part)
+double ImpulseRatio(const Vec3& impulse, const Vec3& normal) {
+  const double along = impulse.dot(normal);
+  return along > 0.0 ? (impulse - along * normal).norm() / along : 0.0;
+}
+
 // a vector's part the pair's motion takes: horizontal when the height is held
 Vec3 Acting(const Vec3& v, bool horizontal) { return horizontal ? Vec3(v.x(), v.y(), 0.0) : v; }
 
@@ -104,6 +117,12 @@ PairSummary SummarizePair(const Simulation& sim, const PairContact& c) {
   p.point_closing_speed = -(PointVelocity(a0, a0, r_a) - PointVelocity(b0, b0, r_b)).dot(p.direction);
   p.point_separation_speed = (PointVelocity(a1, a0, r_a) - PointVelocity(b1, b0, r_b)).dot(p.direction);
   p.contact_start = start.time;
+  // how much of the impulse friction made, and of each body's turn
+  p.impulse_ratio = ImpulseRatio(impulse, p.direction);
+  p.yaw_rate_change[0] = YawRateChange(sim, c.a, c.angular_impulse_on_a);
+  p.yaw_rate_change[1] = YawRateChange(sim, c.b, c.angular_impulse_on_b);
+  p.friction_yaw_rate_change[0] = YawRateChange(sim, c.a, c.friction_angular_impulse_on_a);
+  p.friction_yaw_rate_change[1] = YawRateChange(sim, c.b, c.friction_angular_impulse_on_b);
   return p;
 }
 

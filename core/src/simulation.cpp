@@ -172,11 +172,13 @@ void Simulation::NoteContact(const StepResult& step, double dt) {
     if (known == pair_contacts_.end())
       known = pair_contacts_.insert(pair_contacts_.end(),
                                     {p.body[0], p.body[1], Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(),
-                                     history_.size() - 1});
+                                     Vec3::Zero(), Vec3::Zero(), history_.size() - 1});
     known->impulse_on_a += on_a * dt;
     known->normal_impulse_on_a += p.normal_force[0] * dt;
     known->angular_impulse_on_a += (p.normal_moment[0] + p.friction_moment[0]) * dt;
     known->angular_impulse_on_b += (p.normal_moment[1] + p.friction_moment[1]) * dt;
+    known->friction_angular_impulse_on_a += p.friction_moment[0] * dt;
+    known->friction_angular_impulse_on_b += p.friction_moment[1] * dt;
   }
   bool in_contact = false;
   for (const CgLoads& loads : step.loads) in_contact = in_contact || loads.force_earth.squaredNorm() > 0.0;

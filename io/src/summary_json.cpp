@@ -101,6 +101,10 @@ nlohmann::json SummaryObject(const Summary& s, UnitSystem system) {
         {"point_closing_speed", p.point_closing_speed * u.speed},
         {"point_separation_speed", p.point_separation_speed * u.speed},
         {"point_restitution", p.point_restitution()},
+        {"impulse_ratio", p.impulse_ratio},
+        {"yaw_rate_change_deg_s", {p.yaw_rate_change[0] * kRadToDeg, p.yaw_rate_change[1] * kRadToDeg}},
+        {"friction_yaw_rate_change_deg_s",
+         {p.friction_yaw_rate_change[0] * kRadToDeg, p.friction_yaw_rate_change[1] * kRadToDeg}},
     });
   j["warnings"] = nlohmann::json::array();
   for (const RunWarning& w : s.warnings) j["warnings"].push_back({{"code", w.code}, {"field", w.field}, {"message", w.message}});

@@ -169,6 +169,13 @@ std::string OverallTable(const Context& c) {
              one(FormatFixed(p.closing_speed * u.speed, 2) + " / " + FormatFixed(p.separation_speed * u.speed, 2)));
     t += Row("effective restitution at the CGs / at the impact point" + pair,
              one(FormatFixed(p.restitution(), 3) + " / " + FormatFixed(p.point_restitution(), 3)));
+    t += Row("impulse ratio (tangential / normal impulse)" + pair, one(FormatFixed(p.impulse_ratio, 3)));
+    // the turn the pair gave each of its bodies, and friction's part of it
+    const auto turns = [](const double (&rate)[2]) {
+      return FormatFixed(rate[0] * kRadToDeg, 1) + " / " + FormatFixed(rate[1] * kRadToDeg, 1);
+    };
+    t += Row("yaw rate change \"" + s.bodies[p.a].name + "\" / \"" + s.bodies[p.b].name + "\", of it by friction [deg/s]",
+             one(turns(p.yaw_rate_change) + ", " + turns(p.friction_yaw_rate_change)));
   }
   const ContactDiagnostics& d = s.diagnostics;
   t += Row("diagnostics: candidates / located / touching / faces pushed by rigid nodes",

@@ -86,6 +86,13 @@ void ExpectClosedForm(SearchDirection direction, StopRule stop, double time_step
   // rigid wall (the wall cannot absorb any)
   EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02) << label;
   EXPECT_NEAR(s.law_energy, s.crush_energy, 0.02 * s.crush_energy) << label;
+  // the pair's account of the turn: no friction, so no friction yaw and an impulse ratio within the
+  // lateral bar above; the box's yaw rate change is its whole turn (it started without one and
+  // nothing else loads it), to round-off
+  const PairSummary& pair = s.pairs.at(0);
+  EXPECT_LT(pair.impulse_ratio, 0.01) << label;
+  EXPECT_EQ(pair.friction_yaw_rate_change[0], 0.0) << label;
+  EXPECT_NEAR(pair.yaw_rate_change[0], yaw_rate, 1e-9 * std::abs(yaw_rate)) << label;
   std::printf("[measured] eccentric wall %s: delta-V %.4f m/s (closed form %.4f), yaw rate %.4f rad/s (%.4f), "
               "lateral %.2e m/s, law/ledger %.4f\n",
               label, -dv.x(), expected.delta_v, yaw_rate, expected.yaw_rate, dv.y(), s.law_energy / s.crush_energy);

@@ -77,6 +77,22 @@ void ExpectClosedForm(double mu, const Variant& v) {
   EXPECT_NEAR(-dv.x(), kNormalMph * u::kMph, 0.03 * kNormalMph * u::kMph) << "mu " << mu << " " << v.label;
   EXPECT_NEAR(-dv.y(), expected, 0.03 * expected) << "mu " << mu << " " << v.label;
   EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02) << "mu " << mu << " " << v.label;
+  // the impulse ratio (tangential over normal impulse): mu while the box slides throughout, the slide
+  // over the approach once friction stops it (3 %, the null band as above)
+  const double ratio = std::min(mu, kSlideMph / kNormalMph);
+  EXPECT_NEAR(s.pairs.at(0).impulse_ratio, ratio, 0.03 * ratio) << "mu " << mu << " " << v.label;
+  // the friction's yaw: its impulse m dv_y acts along the wall at the box's crushed front, so its moment
+  // about the CG over that impulse, the arm, lies between the front's rest place (L/2) and its
+  // deepest crush behind it
+  const int box = v.wall_first ? 1 : 0;
+  const BodySpec& spec = scenario.bodies[box];
+  const double friction_yaw = s.pairs.at(0).friction_yaw_rate_change[box];
+  const double arm = friction_yaw * spec.inertia_diagonal->z() / (spec.mass * dv.y()) / u::kInch;
+  const double crush = s.bodies[box].max_dynamic_crush / u::kInch;
+  EXPECT_GE(arm, kLength / 2 - crush - 1e-6) << "mu " << mu << " " << v.label;
+  EXPECT_LE(arm, kLength / 2 + 1e-6) << "mu " << mu << " " << v.label;
+  std::printf("[measured] wall friction impulse ratio %.4f (closed form %.4f), friction's arm %.3f in (%.1f to %.1f)\n",
+              s.pairs.at(0).impulse_ratio, ratio, arm, kLength / 2 - crush, kLength / 2);
   std::printf("[measured] wall friction mu %.2f, %s: slide delta-V %.4f m/s (closed form %.4f, %s), normal %.4f m/s\n",
               mu, v.label, -dv.y(), expected, mu * kNormalMph >= kSlideMph ? "sticks" : "slides", -dv.x());
 }

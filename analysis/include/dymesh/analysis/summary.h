@@ -44,6 +44,14 @@ struct PairSummary {
   /// (its moments about each CG give the line; any point on it gives the same normal speed)
   double point_closing_speed = 0.0, point_separation_speed = 0.0;
   double contact_start = 0.0;         ///< [s]
+  /// the impulse's part across `direction` over its part along it: the collision's effective friction
+  /// (the impulse ratio of planar impact mechanics), the pair's mu while it slid throughout, less where
+  /// friction stopped the slide
+  double impulse_ratio = 0.0;
+  /// [rad/s] the yaw rate the pair's loads gave a and b (their moments about the vertical through each
+  /// CG over its yaw inertia; 0 for a body that does not move), and the friction's part of it
+  double yaw_rate_change[2] = {0.0, 0.0};
+  double friction_yaw_rate_change[2] = {0.0, 0.0};
 
   /// separation over closing speed at the CGs, and at the impact point (0 when they did not close)
   double restitution() const { return closing_speed > 0.0 ? separation_speed / closing_speed : 0.0; }

@@ -38,6 +38,8 @@ struct PairContact {
   Vec3 normal_impulse_on_a{0, 0, 0};  ///< [N s] earth frame, its normal part (along the master surfaces' normals)
   Vec3 angular_impulse_on_a{0, 0, 0};  ///< [N m s] earth frame, its moment about a's CG, summed over the steps
   Vec3 angular_impulse_on_b{0, 0, 0};  ///< [N m s] earth frame, the moment of a's on b about b's CG
+  Vec3 friction_angular_impulse_on_a{0, 0, 0};  ///< [N m s] earth frame, the friction's part of angular_impulse_on_a
+  Vec3 friction_angular_impulse_on_b{0, 0, 0};  ///< [N m s] earth frame, the friction's part of angular_impulse_on_b
   std::size_t first_sample = 0;  ///< history index of the state at which the pair's contact began
 };
 
