@@ -174,7 +174,8 @@ std::string OverallTable(const Context& c) {
     const auto turns = [](const double (&rate)[2]) {
       return FormatFixed(rate[0] * kRadToDeg, 1) + " / " + FormatFixed(rate[1] * kRadToDeg, 1);
     };
-    t += Row("yaw rate change \"" + s.bodies[p.a].name + "\" / \"" + s.bodies[p.b].name + "\", of it by friction [deg/s]",
+    const std::string names = "\"" + s.bodies[p.a].name + "\" / \"" + s.bodies[p.b].name + "\"";
+    t += Row("yaw rate change " + names + ", of it by friction [deg/s]",
              one(turns(p.yaw_rate_change) + ", " + turns(p.friction_yaw_rate_change)));
   }
   const ContactDiagnostics& d = s.diagnostics;

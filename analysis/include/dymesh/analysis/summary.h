@@ -46,7 +46,7 @@ struct PairSummary {
   double contact_start = 0.0;         ///< [s]
   /// the impulse's part across `direction` over its part along it: the collision's effective friction
   /// (the impulse ratio of planar impact mechanics), the pair's mu while it slid throughout, less where
-  /// friction stopped the slide
+  /// friction stopped the slide or its directions cancelled
   double impulse_ratio = 0.0;
   /// [rad/s] the yaw rate the pair's loads gave a and b (their moments about the vertical through each
   /// CG over its yaw inertia; 0 for a body that does not move), and the friction's part of it
