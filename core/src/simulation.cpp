@@ -169,10 +169,13 @@ void Simulation::NoteContact(const StepResult& step, double dt) {
     if (on_a.squaredNorm() == 0.0) continue;
     auto known = std::find_if(pair_contacts_.begin(), pair_contacts_.end(),
                               [&](const PairContact& c) { return c.a == p.body[0] && c.b == p.body[1]; });
-    if (known == pair_contacts_.end())
-      known = pair_contacts_.insert(pair_contacts_.end(),
-                                    {p.body[0], p.body[1], Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(),
-                                     Vec3::Zero(), Vec3::Zero(), history_.size() - 1});
+    if (known == pair_contacts_.end()) {
+      PairContact fresh;
+      fresh.a = p.body[0];
+      fresh.b = p.body[1];
+      fresh.first_sample = history_.size() - 1;
+      known = pair_contacts_.insert(pair_contacts_.end(), fresh);
+    }
     known->impulse_on_a += on_a * dt;
     known->normal_impulse_on_a += p.normal_force[0] * dt;
     known->angular_impulse_on_a += (p.normal_moment[0] + p.friction_moment[0]) * dt;

@@ -164,7 +164,8 @@ std::string OverallTable(const Context& c) {
            one(FormatFixed(s.momentum_before.norm() * u.momentum, 1) + " / " + FormatFixed(s.momentum_after.norm() * u.momentum, 1)));
   // per pair that touched (one row for a two-body run)
   for (const PairSummary& p : s.pairs) {
-    const std::string pair = s.pairs.size() > 1 ? " \"" + s.bodies[p.a].name + "\" / \"" + s.bodies[p.b].name + "\"" : "";
+    const std::string names = "\"" + s.bodies[p.a].name + "\" / \"" + s.bodies[p.b].name + "\"";
+    const std::string pair = s.pairs.size() > 1 ? " " + names : "";
     t += Row("closing / separation speed" + pair + " [" + u.speed_name + "]",
              one(FormatFixed(p.closing_speed * u.speed, 2) + " / " + FormatFixed(p.separation_speed * u.speed, 2)));
     t += Row("effective restitution at the CGs / at the impact point" + pair,
@@ -174,7 +175,6 @@ std::string OverallTable(const Context& c) {
     const auto turns = [](const double (&rate)[2]) {
       return FormatFixed(rate[0] * kRadToDeg, 1) + " / " + FormatFixed(rate[1] * kRadToDeg, 1);
     };
-    const std::string names = "\"" + s.bodies[p.a].name + "\" / \"" + s.bodies[p.b].name + "\"";
     t += Row("yaw rate change " + names + ", of it by friction [deg/s]",
              one(turns(p.yaw_rate_change) + ", " + turns(p.friction_yaw_rate_change)));
   }

@@ -241,13 +241,17 @@ Scenario WithOptions(const Scenario& base, const std::function<void(ContactOptio
   return s;
 }
 
+// the other contact options the demos are held to, each with its label
+const std::vector<std::pair<std::string, std::function<void(ContactOptions*)>>> kOtherOptions = {
+    {"3 passes", [](ContactOptions* o) { o->passes_per_step = 3; }},
+    {"4 passes", [](ContactOptions* o) { o->passes_per_step = 4; }},
+    {"stop after one", [](ContactOptions* o) { o->stop_rule = StopRule::kAfterOne; }}};
+
 void ExpectPartsWithOtherContactOptions(const std::string& name) {
   const Scenario base = Demo(name);
-  const std::vector<std::pair<std::string, Outcome>> variants = {
-      {"3 passes", dymesh::Run(WithOptions(base, [](ContactOptions* o) { o->passes_per_step = 3; }), false)},
-      {"4 passes", dymesh::Run(WithOptions(base, [](ContactOptions* o) { o->passes_per_step = 4; }), false)},
-      {"stop after one",
-       dymesh::Run(WithOptions(base, [](ContactOptions* o) { o->stop_rule = StopRule::kAfterOne; }), false)}};
+  std::vector<std::pair<std::string, Outcome>> variants;
+  for (const auto& [label, change] : kOtherOptions)
+    variants.emplace_back(label, dymesh::Run(WithOptions(base, change), false));
   for (const auto& [label, outcome] : variants) {
     ExpectParted(outcome, 0.5, name + " " + label);
     EXPECT_NEAR(outcome.balance, 0.0, 0.02) << name << " " << label;
@@ -263,12 +267,11 @@ TEST(Convergence, SideImpactPartsWithOtherContactOptions) { ExpectPartsWithOther
 // while over 16 starts the default parts within 0.5 s in 4, 3 passes in 4, 4 passes in 3, stop after
 // one in 10)
 TEST(Convergence, OffsetFrontalPartsWithOtherContactOptions) {
-  auto with = [](const std::function<void(ContactOptions*)>& change) {
-    return [change](Scenario s) { return dymesh::Run(WithOptions(s, change), false); };
-  };
-  OffsetBand(with([](ContactOptions* o) { o->passes_per_step = 3; }), "offset frontal, 3 passes");
-  OffsetBand(with([](ContactOptions* o) { o->passes_per_step = 4; }), "offset frontal, 4 passes");
-  OffsetBand(with([](ContactOptions* o) { o->stop_rule = StopRule::kAfterOne; }), "offset frontal, stop after one");
+  for (const auto& option : kOtherOptions) {
+    const auto& change = option.second;
+    OffsetBand([&change](Scenario s) { return dymesh::Run(WithOptions(s, change), false); },
+               "offset frontal, " + option.first);
+  }
 }
 TEST(Convergence, Oblique45DegreesPartsWithOtherContactOptions) {
   ExpectPartsWithOtherContactOptions("car_to_car_oblique.json");
