@@ -70,13 +70,15 @@ Scenario BoxIntoRigidBlock() {
 }
 
 // Known answer: the base frame's results. The frame enters the engine only through the bodies'
-// absolute positions and velocities, whose round-off (1e-15 of them) is all that may differ: each
-// body's delta-V vector, yaw rate and deepest crush, the pair's crush and friction work and the end
-// of the contact within 1e-9 (the momentum tests' bar; measured 5e-15 and, for a yaw rate near 0,
-// 1e-13 of the largest). Each body's part of the crush work within 1e-4: where the grids of two flat
-// fronts line up, a node on the other box's face edge meets one face or its neighbour by round-off,
-// and the two faces' corners give its layer split (spec §5) slightly different crushes, not its force
-// (measured 2.6e-5 on the boxes, 3e-15 on the car demo)
+// absolute positions and velocities, whose round-off (1e-15 of them) is all that may differ; where the
+// grids of two flat fronts line up, a node on the other box's face edge meets one face or its
+// neighbour by round-off, and that choice grows through the nodes' crush and stick: each body's
+// delta-V vector, yaw rate and deepest crush, the pair's crush and friction work and the end of the
+// contact within 1e-6 of their size (measured 1e-14 on the rigid block and the car demo, up to
+// 1.2e-9 of the largest yaw rate on the boxes; a friction slide read with a tenth of one body's
+// velocity left out, a frame dependence, moves them 1e-2 to 0.24). Each body's part of the crush work
+// within 1e-4: the face a node meets at such a tie gives its layer split (spec §5) its corners'
+// crushes, not its force (measured 1.0e-5 on the boxes, 2e-15 on the car demo)
 void ExpectSameCollision(const std::string& label, const Scenario& base) {
   const Summary s0 = RunSummary(base);
   double largest_yaw = 0.0, total_crush = 0.0;
@@ -89,14 +91,14 @@ void ExpectSameCollision(const std::string& label, const Scenario& base) {
     std::snprintf(at, sizeof at, "%s, frame moving at (%g, %g) mph", label.c_str(), frame.x(), frame.y());
     for (std::size_t i = 0; i < s0.bodies.size(); ++i) {
       const BodySummary &b0 = s0.bodies[i], &b1 = s1.bodies[i];
-      EXPECT_LE((b1.delta_v_earth - b0.delta_v_earth).norm(), 1e-9 * b0.delta_v_earth.norm()) << at << ", " << b0.name;
-      EXPECT_NEAR(b1.final_yaw_rate, b0.final_yaw_rate, 1e-9 * largest_yaw) << at << ", " << b0.name;
-      EXPECT_NEAR(b1.max_crush, b0.max_crush, 1e-9 * b0.max_crush) << at << ", " << b0.name;
+      EXPECT_LE((b1.delta_v_earth - b0.delta_v_earth).norm(), 1e-6 * b0.delta_v_earth.norm()) << at << ", " << b0.name;
+      EXPECT_NEAR(b1.final_yaw_rate, b0.final_yaw_rate, 1e-6 * largest_yaw) << at << ", " << b0.name;
+      EXPECT_NEAR(b1.max_crush, b0.max_crush, 1e-6 * b0.max_crush) << at << ", " << b0.name;
       EXPECT_NEAR(b1.crush_energy, b0.crush_energy, 1e-4 * total_crush) << at << ", " << b0.name;
     }
-    EXPECT_NEAR(s1.crush_energy, s0.crush_energy, 1e-9 * s0.crush_energy) << at;
-    EXPECT_NEAR(s1.friction_energy, s0.friction_energy, 1e-9 * s0.crush_energy) << at;
-    EXPECT_NEAR(s1.contact_end, s0.contact_end, 1e-9) << at;
+    EXPECT_NEAR(s1.crush_energy, s0.crush_energy, 1e-6 * s0.crush_energy) << at;
+    EXPECT_NEAR(s1.friction_energy, s0.friction_energy, 1e-6 * s0.crush_energy) << at;
+    EXPECT_NEAR(s1.contact_end, s0.contact_end, 1e-6 * s0.contact_end) << at;
     EXPECT_NEAR(s1.energy_balance_error, 0.0, 1e-9) << at;
     std::printf("[measured] %s: delta-V %.12f mph (base %.12f), yaw rate %.9f deg/s (base %.9f)\n", at,
                 s1.bodies[0].delta_v_earth.norm() / u::kMph, s0.bodies[0].delta_v_earth.norm() / u::kMph,
