@@ -152,9 +152,8 @@ RearEnd RunRearEnd(const std::string& label, const std::string& json, int p406_s
 // of the closure covers nodes of the two meshes not exactly opposite (faces of 1-3 in at the
 // bumpers). The ledger balances within 2 % (the bar). Held over dt/2, 3 and 4 passes, the
 // local-average-normal and polygon-normal searches, the p406's mesh 1:4, the body order and a frame
-// turned 30 degrees, each as the
-// mean over five steps 0.96-1.04 times its own: a single run is a draw from a spread of about 14 % of
-// the closure (the default's five: -0.1 to +13.6 %; before the friction read the slide at the step's
+// turned 30 degrees, each as the mean over five steps 0.96-1.04 times its own: a single run is a
+// draw from a spread of about 14 % of the closure (the default's five: -0.1 to +13.6 %; before the friction read the slide at the step's
 // end, nudging the default by 0.5 mph or 4 % of its step gave 4-16 %, and the single default run, +11.4 %
 // since, had passed). The local-average-normal search closed 25 % more than it crushed (38.1 against
 // 28.6 in) until nodes pressed on a deformable master stuck within the friction cone (53rd session:

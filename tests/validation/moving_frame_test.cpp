@@ -4,6 +4,7 @@
 // collision's results must not depend on the common velocity.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -48,8 +49,8 @@ Scenario EccentricBoxes() {
   return s;
 }
 
-// the same box into a rigid 8000 lb block that moves in the plane (the rigid contact: nodes stick
-// to its faces within the friction cone, and its own nodes push the box's faces)
+// the same box into a rigid 8000 lb block that moves in the plane (the rigid contact: the block is
+// always the master, and its own nodes push the box's faces)
 Scenario BoxIntoRigidBlock() {
   Scenario s = testing::UsScenario("(moving frame test)", 0.0005, 0.5);
   BodySpec a = testing::BoxVehicle("a", 180, 66, 30, {18, 22, 10}, 3000, 300, 100, 30, 0.15);
@@ -91,7 +92,8 @@ void ExpectSameCollision(const std::string& label, const Scenario& base) {
     std::snprintf(at, sizeof at, "%s, frame moving at (%g, %g) mph", label.c_str(), frame.x(), frame.y());
     for (std::size_t i = 0; i < s0.bodies.size(); ++i) {
       const BodySummary &b0 = s0.bodies[i], &b1 = s1.bodies[i];
-      EXPECT_LE((b1.delta_v_earth - b0.delta_v_earth).norm(), 1e-6 * b0.delta_v_earth.norm()) << at << ", " << b0.name;
+      EXPECT_LE((b1.delta_v_earth - b0.delta_v_earth).norm(), 1e-6 * b0.delta_v_earth.norm())
+          << at << ", " << b0.name;
       EXPECT_NEAR(b1.final_yaw_rate, b0.final_yaw_rate, 1e-6 * largest_yaw) << at << ", " << b0.name;
       EXPECT_NEAR(b1.max_crush, b0.max_crush, 1e-6 * b0.max_crush) << at << ", " << b0.name;
       EXPECT_NEAR(b1.crush_energy, b0.crush_energy, 1e-4 * total_crush) << at << ", " << b0.name;
