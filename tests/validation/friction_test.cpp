@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <string>
 
 #include "dymesh/io/body_models.h"
 #include "dymesh/io/scenario_json.h"
@@ -36,23 +37,36 @@ struct Variant {
   double frame_angle = 0.0;     // [rad] every pose and velocity turned about the vertical
   SearchDirection direction = SearchDirection::kVelocity;
   bool wall_first = false;
+  int passes = 2;
+  int box_subdivisions = 0;
 };
 
 Mat3 Rz(double angle) { return BodyToEarth(0.0, 0.0, angle); }
 
-Scenario SlidingScenario(double mu, const Variant& v) {
+// the wall as a crushable block (fixed, the box's own law on every face), or rigid
+Scenario SlidingScenario(double mu, const Variant& v, bool deformable_wall) {
   Scenario s;
   s.file = "(wall friction test)";
   s.units = UnitSystem::kUS;
   s.time_step = v.time_step;
   s.duration = 0.4;
   s.contact.search_direction = v.direction;
+  s.contact.passes_per_step = v.passes;
   BodySpec box = testing::BoxVehicle("box", kLength, kWidth, 30, {1, 20, 10}, 3000, 300, 100, 30, 0.0);
   const double box_izz = box.mass * (std::pow(kLength * u::kInch, 2) + std::pow(kWidth * u::kInch, 2)) / 12;
   box.inertia_diagonal = Vec3(1, 1, 1) * 1e4 * box_izz;
   box.initial.velocity = Vec3(kNormalMph, kSlideMph, 0) * u::kMph;
   box.friction = mu;
+  box.mesh.subdivisions = v.box_subdivisions;
   BodySpec wall = testing::RigidWall(kLength / 2 + 0.5);
+  if (deformable_wall) {
+    // nodes 5 in apart: a coarse wall node (100 in from its neighbours) would press its whole 5,000 in²
+    // on the 1,800 in² front (README, Known limits: a node meeting a face narrower than its own)
+    wall.mesh.box_segments = {1, 80, 20};
+    wall.rigid = false;
+    wall.mass = 100 * box.mass;  // fixed: the mass does not act
+    wall.stiffness = box.stiffness;
+  }
   wall.friction = mu;  // the pair's mu is the mean of the two
   for (BodySpec* b : {&box, &wall}) testing::TurnAboutVertical(v.frame_angle, b);
   s.bodies = v.wall_first ? std::vector<BodySpec>{wall, box} : std::vector<BodySpec>{box, wall};
@@ -64,8 +78,9 @@ Scenario SlidingScenario(double mu, const Variant& v) {
 // (it sticks: the slide is stopped, not reversed). Slide delta-V = min(mu v_n, v_t)
 double SlideDeltaV(double mu) { return std::min(mu * kNormalMph, kSlideMph) * u::kMph; }
 
-void ExpectClosedForm(double mu, const Variant& v) {
-  const Scenario scenario = SlidingScenario(mu, v);
+void ExpectClosedForm(double mu, const Variant& v, bool deformable_wall = false) {
+  const Scenario scenario = SlidingScenario(mu, v, deformable_wall);
+  const std::string label = std::string(v.label) + (deformable_wall ? ", deformable wall" : "");
   auto device = std::make_shared<const accel::EmbreeDevice>();
   Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
   sim.Run();
@@ -74,13 +89,13 @@ void ExpectClosedForm(double mu, const Variant& v) {
   const Vec3 dv = Rz(v.frame_angle).transpose() * s.bodies[v.wall_first ? 1 : 0].delta_v_earth;
   const double expected = SlideDeltaV(mu);
   // 3 %: the null band (1 in/s, 2 % of the 3 mph slide) could leave a slide that slow unresisted
-  EXPECT_NEAR(-dv.x(), kNormalMph * u::kMph, 0.03 * kNormalMph * u::kMph) << "mu " << mu << " " << v.label;
-  EXPECT_NEAR(-dv.y(), expected, 0.03 * expected) << "mu " << mu << " " << v.label;
-  EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02) << "mu " << mu << " " << v.label;
+  EXPECT_NEAR(-dv.x(), kNormalMph * u::kMph, 0.03 * kNormalMph * u::kMph) << "mu " << mu << " " << label;
+  EXPECT_NEAR(-dv.y(), expected, 0.03 * expected) << "mu " << mu << " " << label;
+  EXPECT_NEAR(s.energy_balance_error, 0.0, 0.02) << "mu " << mu << " " << label;
   // the impulse ratio (tangential over normal impulse): mu while the box slides throughout, the slide
   // over the approach once friction stops it (3 %, the null band as above)
   const double ratio = std::min(mu, kSlideMph / kNormalMph);
-  EXPECT_NEAR(s.pairs.at(0).impulse_ratio, ratio, 0.03 * ratio) << "mu " << mu << " " << v.label;
+  EXPECT_NEAR(s.pairs.at(0).impulse_ratio, ratio, 0.03 * ratio) << "mu " << mu << " " << label;
   // the friction's yaw: its impulse m dv_y acts along the wall at the box's crushed front, so its moment
   // about the CG over that impulse, the arm, lies between the front's rest place (L/2) and its
   // deepest crush behind it
@@ -89,12 +104,12 @@ void ExpectClosedForm(double mu, const Variant& v) {
   const double friction_yaw = s.pairs.at(0).friction_yaw_rate_change[box];
   const double arm = friction_yaw * spec.inertia_diagonal->z() / (spec.mass * dv.y()) / u::kInch;
   const double crush = s.bodies[box].max_dynamic_crush / u::kInch;
-  EXPECT_GE(arm, kLength / 2 - crush - 1e-6) << "mu " << mu << " " << v.label;
-  EXPECT_LE(arm, kLength / 2 + 1e-6) << "mu " << mu << " " << v.label;
+  EXPECT_GE(arm, kLength / 2 - crush - 1e-6) << "mu " << mu << " " << label;
+  EXPECT_LE(arm, kLength / 2 + 1e-6) << "mu " << mu << " " << label;
   std::printf("[measured] wall friction impulse ratio %.4f (closed form %.4f), friction's arm %.3f in (%.1f to %.1f)\n",
               s.pairs.at(0).impulse_ratio, ratio, arm, kLength / 2 - crush, kLength / 2);
   std::printf("[measured] wall friction mu %.2f, %s: slide delta-V %.4f m/s (closed form %.4f, %s), normal %.4f m/s\n",
-              mu, v.label, -dv.y(), expected, mu * kNormalMph >= kSlideMph ? "sticks" : "slides", -dv.x());
+              mu, label.c_str(), -dv.y(), expected, mu * kNormalMph >= kSlideMph ? "sticks" : "slides", -dv.x());
 }
 
 // the default run, then a half step, a turned frame, the other search methods and the other body order
@@ -110,6 +125,26 @@ TEST(WallFriction, SlidingTakesMuTimesTheNormalImpulse) {
 }
 TEST(WallFriction, StickingStopsTheSlideAndNoMore) {
   for (const Variant& v : kVariants) ExpectClosedForm(0.5, v);
+}
+
+// against a crushable wall (spec §5, §7), where nodes pressed on the deformable face stick within the
+// friction cone too, each side taking back its share of the slide: friction still stops the slide
+// and does not reverse it, so with mu 0.5 the slide delta-V is v_t and the impulse ratio v_t / v_n as
+// against the rigid wall. Also with 3 passes and the box meshed 1:4. (Sliding, mu 0.1, has no closed
+// form here: the wall's crushed faces turn toward the slide, so the normal impulse itself tilts along
+// the wall; measured: the impulse ratio about it 0.096-0.099, the slide delta-V 0.67-1.04 m/s against
+// the flat wall's 0.447)
+const Variant kDeformableWallVariants[] = {{"default"},
+                                           {"dt/2", 0.00025},
+                                           {"frame +30 deg", 0.0005, 30.0 * u::kDegree},
+                                           {"local average normal", 0.0005, 0.0, SearchDirection::kLocalAverageNormal},
+                                           {"polygon normal", 0.0005, 0.0, SearchDirection::kPolyNormal},
+                                           {"wall listed first", 0.0005, 0.0, SearchDirection::kVelocity, true},
+                                           {"3 passes", 0.0005, 0.0, SearchDirection::kVelocity, false, 3},
+                                           {"box mesh 1:4", 0.0005, 0.0, SearchDirection::kVelocity, false, 2, 1}};
+
+TEST(DeformableWallFriction, StickingStopsTheSlideAndNoMore) {
+  for (const Variant& v : kDeformableWallVariants) ExpectClosedForm(0.5, v, true);
 }
 
 // a host loop over the engine (the library's seam) on `scenario`; after each step `check` sees the
