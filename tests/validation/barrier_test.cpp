@@ -4,10 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "dymesh/io/body_models.h"
-#include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
-#include "dymesh/core/simulation.h"
+#include "run_to_end.h"
 #include "test_scenarios.h"
 
 namespace dymesh {
@@ -27,10 +25,7 @@ double ClosedFormCrushIn(double weight_lb, double speed_mph, double width_in, do
 }
 
 Summary RunBarrier(double restitution, double time_step) {
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(testing::BarrierScenario(30.0, restitution, time_step), BuildBodyModels(testing::BarrierScenario(30.0, restitution, time_step)), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  return Summarize(sim);
+  return testing::RunToEnd(testing::BarrierScenario(30.0, restitution, time_step));
 }
 
 TEST(Barrier, MaximumCrushMatchesClosedForm) {

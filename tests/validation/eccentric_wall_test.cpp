@@ -7,10 +7,8 @@
 #include <string>
 #include <utility>
 
-#include "dymesh/io/body_models.h"
-#include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
-#include "dymesh/core/simulation.h"
+#include "run_to_end.h"
 #include "test_scenarios.h"
 
 namespace dymesh {
@@ -60,18 +58,10 @@ ClosedForm ImpulseMomentum(const BodySpec& box, double e) {
   return {impulse / m, arm * impulse / izz, (impulse / m - v) / v};
 }
 
-// the scenario run to its end, summarised
-Summary Simulate(const Scenario& scenario) {
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  return Summarize(sim);
-}
-
 void ExpectClosedForm(SearchDirection direction, StopRule stop, double time_step, double frame_angle,
                       const char* label) {
   const Scenario scenario = EccentricScenario(direction, stop, time_step, frame_angle);
-  const Summary s = Simulate(scenario);
+  const Summary s = testing::RunToEnd(scenario);
   const ClosedForm expected = ImpulseMomentum(scenario.bodies[0], 0.0);
   // delta-V in the wall's frame: normal (x) and tangential (y)
   const Vec3 dv = Rz(frame_angle).transpose() * s.bodies[0].delta_v_earth;
@@ -127,7 +117,7 @@ void ExpectPointRestitution(Scenario scenario, bool wall_first, const std::strin
   scenario.bodies[0].restitution = e;
   const ClosedForm expected = ImpulseMomentum(scenario.bodies[0], e);
   if (wall_first) std::swap(scenario.bodies[0], scenario.bodies[1]);
-  const Summary s = Simulate(scenario);
+  const Summary s = testing::RunToEnd(scenario);
   ASSERT_EQ(s.pairs.size(), 1u) << label;
   const PairSummary& p = s.pairs[0];
   const double delta_v = s.bodies[wall_first ? 1 : 0].delta_v;

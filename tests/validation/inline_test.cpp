@@ -12,6 +12,7 @@
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
 #include "dymesh/core/simulation.h"
+#include "run_to_end.h"
 #include "test_scenarios.h"
 
 namespace dymesh {
@@ -32,12 +33,7 @@ Scenario InlineScenario(double restitution) {
   return s;
 }
 
-Summary RunInline(double restitution) {
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(InlineScenario(restitution), BuildBodyModels(InlineScenario(restitution)), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  return Summarize(sim);
-}
+Summary RunInline(double restitution) { return testing::RunToEnd(InlineScenario(restitution)); }
 
 TEST(Inline, MomentumDeltaVRestitutionAndEnergy) {
   const double e = 0.15;
@@ -153,13 +149,13 @@ RearEnd RunRearEnd(const std::string& label, const std::string& json, int p406_s
 // bumpers). The ledger balances within 2 % (the bar). Held over dt/2, 3 and 4 passes, the
 // local-average-normal and polygon-normal searches, the p406's mesh 1:4, the body order and a frame
 // turned 30 degrees, each as the mean over five steps 0.96-1.04 times its own: a single run is a
-// draw from a spread of about 14 % of the closure (the default's five: -0.1 to +13.6 %; before the friction read the slide at the step's
-// end, nudging the default by 0.5 mph or 4 % of its step gave 4-16 %, and the single default run, +11.4 %
-// since, had passed). The local-average-normal search closed 25 % more than it crushed (38.1 against
-// 28.6 in) until nodes pressed on a deformable master stuck within the friction cone (53rd session:
-// 31.55 against 31.76 in); 3 passes closed 21 % more (36.8 against
-// 29.2 in) until nodes pressed on a deformable master kept to faces turned like the one they were
-// pressed on (2026-11-26). Until nodes pressed on a deformable master stopped unloading
+// draw from a spread of about 14 % of the closure (the default's five: -0.1 to +13.6 %; before the
+// friction read the slide at the step's end, nudging the default by 0.5 mph or 4 % of its step gave
+// 4-16 %, and the single default run, +11.4 % since, had passed). The local-average-normal search
+// closed 25 % more than it crushed (38.1 against 28.6 in) until nodes pressed on a deformable master
+// stuck within the friction cone (53rd session: 31.55 against 31.76 in); 3 passes closed 21 % more
+// (36.8 against 29.2 in) until nodes pressed on a deformable master kept to faces turned like the one
+// they were pressed on (2026-11-26). Until nodes pressed on a deformable master stopped unloading
 // when a gap opened in front of them while the bodies still closed, the default closed 47.8 in for
 // 18.8 + 9.9 in of crush: display-mesh nodes that lost their face sprang back onto the weak rebound
 // curve and sank into the other car.

@@ -5,16 +5,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
-#include "dymesh/core/simulation.h"
 #include "dymesh/core/units.h"
-#include "dymesh/io/body_models.h"
 #include "dymesh/io/scenario_json.h"
+#include "run_to_end.h"
 
 namespace dymesh {
 namespace {
@@ -35,10 +32,7 @@ LadderRun RunWithMesh(const std::string& demo, const std::string& mesh) {
   const std::string data = DYMESH_DATA_DIR;
   Scenario s = LoadScenario(data + "/scenarios/" + demo);
   s.bodies[0].mesh.file = data + "/meshes/" + mesh;
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  const Summary sum = Summarize(sim);
+  const Summary sum = testing::RunToEnd(s);
   const BodySummary& p406 = sum.bodies[0];
   return {p406.delta_v_earth.norm(), p406.crush_energy, p406.final_yaw_rate, p406.max_crush,
           sum.energy_balance_error, sum.status};

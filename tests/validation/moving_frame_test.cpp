@@ -7,15 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
-#include "dymesh/core/simulation.h"
-#include "dymesh/io/body_models.h"
 #include "dymesh/io/scenario_json.h"
+#include "run_to_end.h"
 #include "test_scenarios.h"
 
 namespace dymesh {
@@ -27,13 +24,6 @@ namespace u = units;
 Scenario Boosted(Scenario s, double vx_mph, double vy_mph) {
   for (BodySpec& b : s.bodies) b.initial.velocity += Vec3(vx_mph, vy_mph, 0.0) * u::kMph;
   return s;
-}
-
-Summary RunSummary(const Scenario& s) {
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  return Summarize(sim);
 }
 
 // two deformable boxes of different grids, 3000 lb at 30 mph into 4000 lb at rest, 20 in to the
@@ -81,13 +71,13 @@ Scenario BoxIntoRigidBlock() {
 // within 1e-4: the face a node meets at such a tie gives its layer split (spec §5) its corners'
 // crushes, not its force (measured 1.0e-5 on the boxes, 2e-15 on the car demo)
 void ExpectSameCollision(const std::string& label, const Scenario& base) {
-  const Summary s0 = RunSummary(base);
+  const Summary s0 = testing::RunToEnd(base);
   double largest_yaw = 0.0, total_crush = 0.0;
   for (const BodySummary& b : s0.bodies) largest_yaw = std::max(largest_yaw, std::abs(b.final_yaw_rate));
   for (const BodySummary& b : s0.bodies) total_crush += b.crush_energy;
   ASSERT_GT(largest_yaw, 0.05) << label << ": the collision turns the bodies (the yaw rate is tested)";
   for (const Vec3& frame : {Vec3(17, 9, 0), Vec3(-40, 25, 0)}) {
-    const Summary s1 = RunSummary(Boosted(base, frame.x(), frame.y()));
+    const Summary s1 = testing::RunToEnd(Boosted(base, frame.x(), frame.y()));
     char at[200];
     std::snprintf(at, sizeof at, "%s, frame moving at (%g, %g) mph", label.c_str(), frame.x(), frame.y());
     for (std::size_t i = 0; i < s0.bodies.size(); ++i) {

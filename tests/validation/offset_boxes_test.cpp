@@ -5,10 +5,8 @@
 
 #include <cstdio>
 
-#include "dymesh/io/body_models.h"
-#include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
-#include "dymesh/core/simulation.h"
+#include "run_to_end.h"
 #include "test_scenarios.h"
 
 namespace dymesh {
@@ -28,10 +26,7 @@ Summary OffsetBoxes(int length_segments, SearchDirection search = SearchDirectio
   b.initial.yaw = 180 * u::kDegree;
   b.initial.velocity = Vec3(-15 * u::kMph, 0, 0);
   s.bodies = {a, b};
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  return Summarize(sim);
+  return testing::RunToEnd(s);
 }
 
 // The mesh-convergence bar (2 %) on each box's delta-V and crush energy, and the ledger's
