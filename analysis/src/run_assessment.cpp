@@ -16,9 +16,10 @@ namespace {
 // printf into a std::string (warning texts)
 template <typename... Args>
 std::string Text(const char* format, Args... args) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, format, args...);
-  return buf;
+  // sized to the text: body names of any length are written whole
+  std::string text(std::snprintf(nullptr, 0, format, args...), '\0');
+  std::snprintf(text.data(), text.size() + 1, format, args...);
+  return text;
 }
 
 // every number of the summary a reader relies on is finite
@@ -194,6 +195,19 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          "search reaches (%.3g m): the contact moved it out of the body instead of crushing it "
                          "in; the crush depths and profile there are not physical",
                          s.bodies[i].name.c_str(), out.vertex, out.distance, sc.contact.toofar_maximum)});
+    // spec §5: the other bodies' nodes left this body an equal-pressure share its own nodes never took
+    // (its faces there crush only at corners outside the contact); a share within the null band, where
+    // the law does not yet harden, is not judged
+    const BodySummary& b = s.bodies[i];
+    if (b.untaken_crush > std::max(b.max_dynamic_crush, sc.contact.null_band))
+      w->push_back({"crush_not_in_mesh", "bodies[" + std::to_string(i) + "]",
+                    Text("\"%s\": where the other body met it, its faces stood %.3g m inside that body's crushed "
+                         "surface (its equal-pressure share of the crush there, at its loaded steps), more than its "
+                         "own nodes ever crushed (%.3g m): its faces there are larger than the contact and their "
+                         "corners, outside it, never crushed; its crush depths, profile and deformed mesh under-report "
+                         "the crush (delta-V and the crush energies stand) and the other body's inner layers can be "
+                         "met early; refine its mesh where the contact is",
+                         b.name.c_str(), b.untaken_crush, b.max_dynamic_crush)});
     // a node crushed deeper along its crush than any other body came (spec §2: no push beyond the
     // step's relative motion plus TOOFAR_MARGIN, so the margin is what a node may lie beyond it)
     const NodeBeyondReach beyond = DeepestNodeBeyondReach(sim, i, rest_stats);

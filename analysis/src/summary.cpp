@@ -42,6 +42,12 @@ BodySummary SummarizeBody(const Simulation& sim, int i) {
     b.peak_accel = std::max(b.peak_accel, s.bodies[i].accel_body.norm());
     b.peak_contact_area = std::max(b.peak_contact_area, s.bodies[i].contact_area);
   }
+  // the crush the other bodies left to this body's nodes, at its loaded steps
+  double peak_load = 0.0;
+  for (const Sample& s : sim.history()) peak_load = std::max(peak_load, s.bodies[i].loads.force_earth.norm());
+  for (const Sample& s : sim.history())
+    if (s.bodies[i].loads.force_earth.norm() >= kLoadedFraction * peak_load)
+      b.untaken_crush = std::max(b.untaken_crush, s.bodies[i].untaken_share);
   const double duration = sim.last_contact_time() - sim.first_contact_time();
   b.average_accel = duration > 0.0 ? b.delta_v / duration : 0.0;
   // crush: largest permanent and dynamic deformation, and where

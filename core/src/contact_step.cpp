@@ -357,9 +357,9 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
     free_gap = DistanceToMaster(f, v, f.slave_model->restitution * f.slave->delta_max[v], &out->scratch);
   Vec3 delta;
   bool holding = false;
-  double slave_part = 0.0;
+  LayerShare layers;
   const double node_force = RestoreNode(f, v, found ? &hit : nullptr, closing_unfound, free_gap, dt, &out->diag,
-                                        &out->sums.law_energy, &delta, &holding, &slave_part);
+                                        &out->sums.law_energy, &delta, &holding, &layers);
   if (delta != f.slave->delta[v]) {
     // the new crush waits in pending_delta_ until committed (with the sibling pass, or at once)
     (*f.pending)[v] = delta;
@@ -390,8 +390,11 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   // at the node, whether or not its own nodes reach the point)
   if (!f.master_model->rigid) {
     const double work = node_force * std::abs(hit.rel_velocity.dot(hit.normal)) * dt;
-    out->sums.slave_share_work += slave_part * work;
-    out->sums.master_share_work += (1.0 - slave_part) * work;
+    out->sums.slave_share_work += layers.slave_part * work;
+    out->sums.master_share_work += (1.0 - layers.slave_part) * work;
+    // the master's share of the node's penetration, the crush its own nodes have to take there
+    out->sums.master_share_force += node_force;
+    out->sums.master_share_moment += node_force * (std::max(hit.depth, 0.0) - layers.slave_push);
   }
 }
 
@@ -450,6 +453,8 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
     sums.law_energy += part.sums.law_energy;
     sums.slave_share_work += part.sums.slave_share_work;
     sums.master_share_work += part.sums.master_share_work;
+    sums.master_share_force += part.sums.master_share_force;
+    sums.master_share_moment += part.sums.master_share_moment;
     diag->Add(part.diag);
     now_touching.insert(now_touching.end(), part.touching.begin(), part.touching.end());
     now_holding.insert(now_holding.end(), part.holding.begin(), part.holding.end());
@@ -518,6 +523,15 @@ PairLoads ContactEngine::CombinePasses(int a, int b, const std::vector<PassSums>
   // each side's own view of the contact area: what its nodes met, per pass
   for (int k = 0; k < 2; ++k)
     if (slave_passes[k] > 0) out.contact_area[k] /= slave_passes[k];
+  // each deformable master's share of the other's penetrations, over the passes it was the master in
+  double share_force[2] = {0.0, 0.0}, share_moment[2] = {0.0, 0.0};
+  for (const PassSums& p : sums) {
+    const int km = p.master == a ? 0 : 1;
+    share_force[km] += p.master_share_force;
+    share_moment[km] += p.master_share_moment;
+  }
+  for (int k = 0; k < 2; ++k)
+    if (share_force[k] > 0.0) out.untaken_share[k] = share_moment[k] / share_force[k];
   return out;
 }
 
@@ -656,7 +670,7 @@ double ContactEngine::DistanceToMaster(const PassFrame& f, int v, double radius,
 double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound,
                                   double free_gap, double dt,
                                   ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding,
-                                  double* slave_part) {
+                                  LayerShare* layers_out) {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
   const Stiffness& k = m.VertexStiffness(v);
@@ -800,7 +814,7 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
                                  interface_pressure)
                : 0.0;
   // spec §5: the slave's part of the interface's work where it touches a deformable master
-  if (touching && !f.master_model->rigid) *slave_part = (layers ? *layers : LayersAtNode(f, v, *hit)).slave_part;
+  if (touching && !f.master_model->rigid) *layers_out = layers ? *layers : LayersAtNode(f, v, *hit);
 
   // work of the node law over the deflection change, then commit the new position
   *law_energy += area * NodeLawWork(k, deflection, new_deflection, peak, e, options_);

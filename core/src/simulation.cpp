@@ -204,7 +204,10 @@ void Simulation::Record(const StepResult* step) {
       if (mass > 0.0) b.accel_body = b.loads.force_body / mass;
       for (const PairLoads& p : step->pairs)
         for (int k = 0; k < 2; ++k)
-          if (p.body[k] == i) b.contact_area += p.contact_area[k];
+          if (p.body[k] == i) {
+            b.contact_area += p.contact_area[k];
+            b.untaken_share = std::max(b.untaken_share, p.untaken_share[k]);
+          }
     }
     b.law_energy = s.law_energy;
     b.crush_energy = s.crush_energy;

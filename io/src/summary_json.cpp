@@ -58,6 +58,7 @@ nlohmann::json SummaryObject(const Summary& s, UnitSystem system) {
         {"max_crush_vertex", b.max_crush_vertex},
         {"max_crush_location_body", Vector(b.max_crush_location, u.length)},
         {"max_dynamic_crush", b.max_dynamic_crush * u.length},
+        {"untaken_crush", b.untaken_crush * u.length},
         {"peak_contact_area", b.peak_contact_area * u.length * u.length},
         {"crush_energy", b.crush_energy * u.energy},
         {"friction_energy", b.friction_energy * u.energy},

@@ -10,6 +10,11 @@
 /// What a run reports: per-body delta-V, PDOF, pulse, crush and energy; overall balances.
 namespace dymesh {
 
+/// Fraction of a body's peak contact load above which its steps count as loaded (untaken_crush): the
+/// crush sharing's state near maximum engagement, not a light touch's at the contact's first or last
+/// nodes.
+inline constexpr double kLoadedFraction = 0.5;
+
 /// Results of one body.
 struct BodySummary {
   std::string name;
@@ -25,6 +30,11 @@ struct BodySummary {
   Vec3 max_crush_location{0, 0, 0};  ///< [m] body frame (undamaged position)
   double max_dynamic_crush = 0.0;    ///< [m] largest DeltaMaxTotal
   double peak_contact_area = 0.0;    ///< [m^2] largest area of the body's own nodes in contact in a step
+  /// [m] the crush the other bodies' nodes left for this body's own nodes to take (its equal-pressure
+  /// share of their penetrations, BodySample::untaken_share), the largest while its load was at least
+  /// half its peak (kLoadedFraction). Where its nodes meet the contact, a fraction of its own crush;
+  /// where a face's corners lie outside the contact, the crush its mesh could not take
+  double untaken_crush = 0.0;
   double crush_energy = 0.0;     ///< [J] ledger: share of the normal contact work
   double friction_energy = 0.0;  ///< [J] ledger: share of the friction work
   double law_energy = 0.0;       ///< [J] work of the node law on this body's nodes

@@ -53,6 +53,13 @@ struct PairLoads {
   /// [m^2] contact area of body[k]'s own nodes carrying force against the other (spec §3 A_v summed),
   /// the mean over the step's passes in which body[k] was the slave; 0 for a rigid body (never a slave)
   double contact_area[2] = {0.0, 0.0};
+  /// [m] body[k]'s equal-pressure share (spec §5) of the penetrations the other body's touching nodes
+  /// found in body[k]'s faces, weighted by their node forces, over the step's passes in which body[k]
+  /// was a deformable master: the crush its own nodes still have to take there. Where body[k]'s nodes
+  /// meet the other's faces they take it in the sibling pass (a fraction of its crush stays between
+  /// the two meshes' nodes); on a face whose corners lie outside the contact, the crush body[k]'s mesh
+  /// cannot take. 0 for a rigid body
+  double untaken_share[2] = {0.0, 0.0};
 };
 
 /// What one contact step produced.
@@ -123,6 +130,8 @@ class ContactEngine {
     double touching_area = 0.0;   // [m^2] of slave nodes carrying force
     double law_energy = 0.0;      // [J] node-law work on the slave's nodes
     double slave_share_work = 0.0, master_share_work = 0.0;  // [J] interface work at its nodes, split
+    double master_share_force = 0.0;  // [N] node forces at the nodes that touched a deformable master
+    double master_share_moment = 0.0;  // [N m] the same times the master's share of each one's penetration
     std::vector<FrictionPoint> friction_points;  // ascending node order
   };
   // what one chunk of slave nodes produced (folded in chunk order); buffers reused across passes
@@ -196,10 +205,10 @@ class ContactEngine {
   // `closing_unfound`, the bodies still close on the node (along its last contact normal, or its crush
   // while it holds a spring), and `free_gap`, how far the node may spring back (the distance to a
   // rigid master's surface). *holding: the node was held with a spring still stored (spec §6);
-  // *slave_part: where it touches a deformable master, its part of a further closure (spec §5)
+  // *layers: where it touches a deformable master, the two layers' equal-pressure split (spec §5)
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding,
-                     double* slave_part);
+                     LayerShare* layers);
   void CommitPending(int body);
   // slave node v's layer and a deformable master's at `hit`, sharing its penetration at equal pressure
   // (spec §5), from the node's crush at the step's start

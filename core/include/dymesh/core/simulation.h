@@ -23,6 +23,7 @@ struct BodySample {
   double crush_energy = 0.0;    ///< [J] cumulative ledger crush (normal contact) work
   double friction_energy = 0.0; ///< [J] cumulative ledger friction work
   double contact_area = 0.0;    ///< [m^2] area of the body's own nodes in contact over the step (PairLoads)
+  double untaken_share = 0.0;   ///< [m] its crush the other bodies' nodes left to its own (PairLoads, the largest pair's)
 };
 
 /// One recorded instant.
