@@ -78,7 +78,8 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double c
   if (note == CoarseNote::kAgainstFiner)
     out << Format("    note: median edge %.2f %s: against a finer deformable body, nodes this far apart often miss "
                   "its faces, so this body takes little of the crush there and the other can sink into it at "
-                  "higher speeds (README, Known limits); mesh.subdivisions refines it\n",
+                  "higher speeds (a run marks the crush its mesh could not take, crush_not_in_mesh; README, Known "
+                  "limits); mesh.subdivisions refines it\n",
                   coarse_edge * u.length, u.length_name);
 }
 
