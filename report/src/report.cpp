@@ -133,6 +133,9 @@ std::string ResultRows(const Context& c) {
   s += Row(std::string("max permanent / dynamic crush [") + u.length_name + "]", PerBody(c, [&](int i) {
              return FormatFixed(b[i].max_crush * u.length, 2) + " / " + FormatFixed(b[i].max_dynamic_crush * u.length, 2);
            }));
+  s += Row(std::string("crush left to its own nodes, untaken [") + u.length_name + "]", PerBody(c, [&](int i) {
+             return FormatFixed(b[i].untaken_crush * u.length, 2);
+           }));
   s += Row(std::string("crush / friction work [") + u.energy_name + "]", PerBody(c, [&](int i) {
              return FormatFixed(b[i].crush_energy * u.energy, 0) + " / " + FormatFixed(b[i].friction_energy * u.energy, 0);
            }));
