@@ -205,8 +205,8 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                          "surface (its equal-pressure share of the crush there, at its loaded steps), more than its "
                          "own nodes ever crushed (%.3g m): its faces there are larger than the contact and their "
                          "corners, outside it, never crushed; its crush depths, profile and deformed mesh under-report "
-                         "the crush (delta-V and the crush energies stand) and the other body's inner layers can be "
-                         "met early; refine its mesh where the contact is",
+                         "the crush (delta-V and the crush energies less: the faces press at the equal pressure) and "
+                         "the other body's inner layers can be met early; refine its mesh where the contact is",
                          b.name.c_str(), b.untaken_crush, b.max_dynamic_crush)});
     // a node crushed deeper along its crush than any other body came (spec §2: no push beyond the
     // step's relative motion plus TOOFAR_MARGIN, so the margin is what a node may lie beyond it)
