@@ -17,6 +17,7 @@
 #include "dymesh/core/contact_step.h"
 #include "dymesh/core/rigid_body.h"
 #include "dymesh/core/simulation.h"
+#include "run_to_end.h"
 #include "test_scenarios.h"
 
 namespace dymesh {
@@ -81,10 +82,7 @@ double SlideDeltaV(double mu) { return std::min(mu * kNormalMph, kSlideMph) * u:
 void ExpectClosedForm(double mu, const Variant& v, bool deformable_wall = false) {
   const Scenario scenario = SlidingScenario(mu, v, deformable_wall);
   const std::string label = std::string(v.label) + (deformable_wall ? ", deformable wall" : "");
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(scenario, BuildBodyModels(scenario), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  const Summary s = Summarize(sim);
+  const Summary s = testing::RunToEnd(scenario);
   // delta-V in the wall's frame: normal (x) and along the wall (y)
   const Vec3 dv = Rz(v.frame_angle).transpose() * s.bodies[v.wall_first ? 1 : 0].delta_v_earth;
   const double expected = SlideDeltaV(mu);

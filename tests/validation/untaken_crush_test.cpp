@@ -22,7 +22,7 @@ namespace {
 
 namespace u = dymesh::units;
 
-constexpr double kNullBandIn = 0.5;        // the default NULL_TEST [in]
+const double kNullBandIn = ContactOptions{}.null_band / units::kInch;  // the default NULL_TEST [in]
 constexpr double kA = 350.0, kB = 125.0;   // [lb/in], [lb/in^2] over the conversion height 30 in
 
 // the 180 x 120 x 60 in box `wide` (front meshed `wide_segments`, B times `wide_b_factor`) at 20 mph
@@ -72,6 +72,7 @@ void ExpectShareAtEqualPressure(double wide_b_factor, const std::string& label,
   EXPECT_EQ(wide.max_dynamic_crush, 0.0) << label;
   EXPECT_TRUE(Marked(run, "wide")) << label;
   EXPECT_FALSE(Marked(run, "narrow")) << label;
+  EXPECT_NEAR(run.energy_balance_error, 0.0, 0.02) << label;  // the bar
 }
 
 TEST(UntakenCrush, OneQuadFrontKeepsItsEqualPressureShareAndIsMarked) {
@@ -97,6 +98,7 @@ TEST(UntakenCrush, FinelyMeshedFrontTakesItsShareAndIsNotMarked) {
   EXPECT_LT(wide.untaken_crush, wide.max_dynamic_crush);
   EXPECT_FALSE(Marked(run, "wide"));
   EXPECT_FALSE(Marked(run, "narrow"));
+  EXPECT_NEAR(run.energy_balance_error, 0.0, 0.02);  // the bar
 }
 
 }  // namespace
