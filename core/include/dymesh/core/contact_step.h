@@ -193,11 +193,15 @@ class ContactEngine {
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
                   Located* out) const;
   // master triangle `candidate` for the node at p (master frame): taken when the node lies behind it along
-  // ray_dir, its normal points along `facing` (the way the node faces) and not against `previous` (its last
-  // contact normal) or `parting` (the pair's impulse while the node withdraws), and it is nearer than `best`
+  // ray_dir, its normal points along `facing` (the way the node faces) or, for `faces_of` >= 0, that slave
+  // node meets it by a corner face (CornerMeetsFace), and not against `previous` (its last contact normal)
+  // or `parting` (the pair's impulse while the node withdraws), and it is nearer than `best`
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
-                       const Vec3& facing, const Vec3& previous, const Vec3& parting, bool poly_normal,
-                       const Located* best, Located* out) const;
+                       const Vec3& facing, int faces_of, const Vec3& previous, const Vec3& parting,
+                       bool poly_normal, const Located* best, Located* out) const;
+  // whether slave node v, on an edge or a corner, meets master triangle t (larger than v's faces) by one
+  // of its own faces turned toward it
+  bool CornerMeetsFace(const PassFrame& f, int v, int t) const;
   // distance from slave node v to the master's nearest surface within `radius`, else infinity
   double DistanceToMaster(const PassFrame& f, int v, double radius, std::vector<Candidate>* scratch) const;
   // writes slave node v's law state: unload, delta_max, node_force, node_area, update_step,
