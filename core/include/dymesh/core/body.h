@@ -23,6 +23,7 @@ struct BodyModel {
   double restitution = 0.0;          ///< [-] e of spec §6
   double friction = 0.0;             ///< [-] vehicle-to-vehicle mu of spec §7
   bool rigid = false;                ///< barriers and poles: take no crush
+  double median_edge = 0.0;          ///< [m] median edge length of `mesh` (its typical node spacing)
 
   /// Stiffness of vertex v (its surface's coefficients).
   const Stiffness& VertexStiffness(int v) const { return stiffness[static_cast<int>(surface[v])]; }
