@@ -37,22 +37,6 @@ Vec3 MeanNormal(const BodyModel& model, const BodyState& s, int v, Weight weight
 
 }  // namespace
 
-namespace {
-
-// median length of the triangles' edges (each shared edge counted from both sides: the median is unmoved)
-double MedianEdge(const TriMesh& mesh) {
-  std::vector<double> lengths;
-  lengths.reserve(3 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) lengths.push_back((mesh.vertices[t[k]] - mesh.vertices[t[(k + 1) % 3]]).norm());
-  if (lengths.empty()) return 0.0;
-  auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
-  std::nth_element(lengths.begin(), middle, lengths.end());
-  return *middle;
-}
-
-}  // namespace
-
 BodyModel MakeBodyModel(std::string name, TriMesh mesh, const std::array<Stiffness, kBodySurfaceCount>& stiffness,
                         double mass, const Mat3& inertia, double restitution, double friction, bool rigid) {
   BodyModel m;
@@ -65,7 +49,7 @@ BodyModel MakeBodyModel(std::string name, TriMesh mesh, const std::array<Stiffne
   m.restitution = restitution;
   m.friction = friction;
   m.rigid = rigid;
-  m.median_edge = MedianEdge(m.mesh);
+  m.median_edge = MedianEdgeLength(m.mesh);
   // surface class of each vertex from its rest outward normal (DefineVertStiffness)
   const BodyState rest = MakeBodyState(m, RigidState{});
   m.surface.resize(m.mesh.vertices.size());
