@@ -199,6 +199,9 @@ class ContactEngine {
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
                        const Vec3& facing, int faces_of, const Vec3& previous, const Vec3& parting,
                        bool poly_normal, const Located* best, Located* out) const;
+  // of deformable pair (a, b), whatever their order: the slave of an odd last pass on even steps, whose
+  // passes are also combined first
+  int LeadSlave(int a, int b) const;
   // whether slave node v, on an edge or a corner, meets master triangle t (larger than v's faces) by one
   // of its own faces turned toward it
   bool CornerMeetsFace(const PassFrame& f, int v, int t) const;
