@@ -336,11 +336,16 @@ void ParseTime(const Source& src, const Json& j, const std::string& path, Scenar
   if (const Json* v = Find(j, "stop_at_separation")) s->stop_at_separation = ReadBool(src, *v, Join(path, "stop_at_separation"));
 }
 
-// keys that act only with another option: refused where they would do nothing
+// keys that act only with another option: refused where they would do nothing, or missing where it needs them
 void RefuseIdleContactKeys(const Source& src, const Json& j, const std::string& path, const ContactOptions& o) {
   if (Find(j, "specified_direction") && o.search_direction != SearchDirection::kSpecified)
     Fail(src, Join(path, "specified_direction"),
          "acts only with \"search_direction\": \"specified\"; this search does not use it: remove it or set that search");
+  // (fuzzing, 2026-11-27: without it the search quietly pushed along the body's -x)
+  if (!Find(j, "specified_direction") && o.search_direction == SearchDirection::kSpecified)
+    Fail(src, Join(path, "specified_direction"),
+         "expected with \"search_direction\": \"specified\": the pushback direction in the slave's body frame, "
+         "e.g. [-1, 0, 0]");
   for (const char* key : {"pushback_reduction", "pushback_reduce_limit"})
     if (Find(j, key) && o.version != 4)
       Fail(src, Join(path, key), "acts only in version 4 (pushback reduction); contact.version is " +

@@ -430,6 +430,11 @@ TEST_F(ScenarioFiles, RefusesKeysThatWouldHaveNoEffect) {
   direction["contact"]["search_direction"] = "velocity";
   EXPECT_NE(ExpectRefused(direction, "contact.specified_direction").find("acts only with \"search_direction\": \"specified\""),
             std::string::npos);
+  // and the other way round: the specified search without its direction (it quietly used -x)
+  Json no_direction = Good();
+  no_direction["contact"].erase("specified_direction");
+  EXPECT_NE(ExpectRefused(no_direction, "contact.specified_direction").find("expected with \"search_direction\": \"specified\""),
+            std::string::npos);
   for (const char* key : {"pushback_reduction", "pushback_reduce_limit"}) {
     Json version3 = Good();
     version3["contact"]["version"] = 3;
