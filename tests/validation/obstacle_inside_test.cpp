@@ -3,6 +3,7 @@
 // shape, from where the run ended, against the box's deepest crush anywhere.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -163,6 +164,78 @@ TEST(ObstacleInside, PoleTheBoxCrushedAroundIsNotMarked) {
     EXPECT_FALSE(o.inside) << v.cell << v.label;
     EXPECT_FALSE(o.voided) << v.cell << v.label;
   }
+}
+
+
+// A deformable body through another's faces (fuzzing, 2026-11-27; before, unmarked): a 10 in cube of
+// 200 lb (A 5000, B 2000 lb/in) at 80 mph into a 200 x 80 x 60 in, 5000 lb box (A 300, B 100, 3 in
+// cells), the scene turned `heading` degrees, run 2 s without the stop. The test's own measure: how
+// far the cube's centre went past the box's back face (where it comes in), at any recorded state with
+// the centre inside the box's rest shape, beyond the box's deepest crush within 10 in across that line.
+// Turned 10 deg the cube goes through the box's faces and leaves by its side; unturned it stops
+struct CubeRun {
+  double inside_beyond_crush = -INFINITY;  // [in]
+  bool inside = false, voided = false;
+};
+
+CubeRun RunCubeIntoBox(double heading) {
+  const double turn = heading * u::kDegree;
+  char json[2048];
+  std::snprintf(json, sizeof json, R"({"units": "US", "time": {"step": 0.0005, "duration": 2.0, "stop_at_separation": false},
+    "bodies": [{"name": "cube", "mesh": {"box": {"length": 10, "width": 10, "height": 10, "segments": [3, 3, 3]}},
+      "restitution": 0.1, "friction": 0.5, "weight": 200, "stiffness": {"default": {"A": 5000, "B": 2000}},
+      "initial": {"position": [%.17g, %.17g, -30], "heading": %g, "speed": 80,
+                  "place_at_contact": {"with": "box", "gap": 1}}},
+     {"name": "box", "mesh": {"box": {"length": 200, "width": 80, "height": 60, "segments": [66, 26, 20]}},
+      "restitution": 0.1, "friction": 0.5, "weight": 5000, "stiffness": {"default": {"A": 300, "B": 100}},
+      "initial": {"position": [0, 0, -31], "heading": %g}}]})",
+                -300 * std::cos(turn) - 10 * std::sin(turn), -300 * std::sin(turn) + 10 * std::cos(turn), heading,
+                heading);
+  const Scenario s = ParseScenario(json, "cube_into_box.json");
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
+  sim.Run();
+  const Summary summary = Summarize(sim);
+  const RunAssessment assessment = AssessRun(sim, summary);
+  CubeRun r;
+  // the box's deepest crush by the end among its rest nodes within 10 in of a point across the line
+  // from the box's back (where the cube comes in), its rest frame [in]
+  const BodyModel& box_model = sim.engine().model(1);
+  const BodyState& box_state = sim.engine().state(1);
+  auto crush_near = [&](const Vec3& c) {
+    double deepest = 0.0;
+    for (std::size_t v = 0; v < box_model.mesh.vertices.size(); ++v) {
+      const Vec3 rest = box_model.mesh.vertices[v] / u::kInch;
+      if (std::abs(rest.y() - c.y()) < 10.0 && std::abs(rest.z() - c.z()) < 10.0)
+        deepest = std::max(deepest, box_state.delta_max[v] / u::kInch);
+    }
+    return deepest;
+  };
+  for (const Sample& sample : sim.history()) {
+    const RigidState& box = sample.bodies[1].rigid;
+    const Vec3 c = box.Rotation().transpose() * (sample.bodies[0].rigid.position - box.position) / u::kInch;
+    if (std::abs(c.y()) > 40.0 || std::abs(c.x()) > 100.0) continue;  // the centre outside the rest box
+    // how far past the box's back (x = -100, where it came in) the centre went, beyond the crush there
+    r.inside_beyond_crush = std::max(r.inside_beyond_crush, c.x() + 100.0 - crush_near(c));
+  }
+  for (const RunWarning& w : assessment.warnings) {
+    r.inside = r.inside || w.code == "obstacle_inside";
+    r.voided = r.voided || WarningVoidsResults(w.code);
+  }
+  std::printf("[measured] cube into box turned %g deg: centre %.1f in past the box's back beyond the crush there, "
+              "marked %d, voided %d\n", heading, r.inside_beyond_crush, r.inside, r.voided);
+  return r;
+}
+
+TEST(ObstacleInside, DeformableBodyThroughAnotherIsMarked) {
+  const CubeRun through = RunCubeIntoBox(10.0);
+  ASSERT_GT(through.inside_beyond_crush, kReach);  // the case: through the faces, past the search's reach
+  EXPECT_TRUE(through.inside);
+  EXPECT_TRUE(through.voided);
+  const CubeRun stopped = RunCubeIntoBox(0.0);
+  ASSERT_LT(stopped.inside_beyond_crush, kReach);
+  EXPECT_FALSE(stopped.inside);
+  EXPECT_FALSE(stopped.voided);
 }
 
 }  // namespace

@@ -20,11 +20,13 @@ struct ObstacleInside {
 /// end), measured along `toward_earth` (unit, earth frame: out of `body` toward where the obstacle
 /// came from, against the normal impulse it gave the body; taken in the body's frame as the contact
 /// began), against the deepest crush the body ended with.
-/// spec §2-§5: a node is pushed out of the master, so where a rigid body came in the body's surface
-/// was crushed as deep as it came; a rigid body deeper than that went in between the nodes (the nodes
-/// slid aside, or never met it) and the contact no longer sees it once past TOOFAR_MAXIMUM. Judged
+/// spec §2-§5: a node is pushed out of the master, so where an obstacle came in the body's surface
+/// was crushed as deep as it came (with a deformable obstacle, the body's share of the closure); an
+/// obstacle deeper than that went in between the nodes (the nodes slid aside, or never met it) and the
+/// contact no longer sees it once past TOOFAR_MAXIMUM. A deformable obstacle's vertices are taken as
+/// crushed at the end (no farther out than they were when it went in). Judged
 /// for a closed `body` mesh only, as `rest` (its rest mesh's ComputeStats) says: a display mesh's
-/// panels and interior parts have no front and back to be inside. Judged on the rigid body's vertices
+/// panels and interior parts have no front and back to be inside. Judged on the obstacle's vertices
 /// facing into the body along the line (one on its flank lies against the notch's walls), against
 /// the shallowest rest front and the deepest crush (the corners' deepest crush interpolated across
 /// each face) in the lateral cells round each vertex (the body's median edge, the vertex's cell and

@@ -25,9 +25,9 @@ inline constexpr double kEnergyCreatedTolerance = 0.01;
 /// down to -0.11, -0.20 on the oblique one with the polygon-normal search); still closing at half
 /// their speed, the contact failed to stop them (coarse car meshes head-on: -0.56 to -0.97 of 60 mph).
 inline constexpr double kPassThroughSeparation = -0.5;
-/// The same with a rigid body ended inside the other (obstacle_inside, the independent sign that it
-/// went in): past the most negative fraction a stopped collision ends at (-0.20), with a margin (a box
-/// spun 48 deg about a post 25 in off its axis ends at -0.08 with the post inside its turned side)
+/// The same with a body ended inside the other (obstacle_inside, the independent sign that it went
+/// in): past the most negative fraction a stopped collision ends at (-0.20), with a margin (a box spun
+/// 48 deg about a post 25 in off its axis ends at -0.08 with the post inside its turned side)
 inline constexpr double kPassThroughWithObstacleInside = -0.25;
 
 /// Whether a run warning says a complete run's delta-V, crush and energies are not physical
