@@ -596,7 +596,8 @@ bool ContactEngine::CornerMeetsFace(const PassFrame& f, int v, int t) const {
     return std::max({(x - y).norm(), (y - z).norm(), (z - x).norm()});
   };
   const auto& tri = f.master_model->mesh.triangles[t];
-  const double face_size = longest_edge(f.master->vertices[tri[0]], f.master->vertices[tri[1]], f.master->vertices[tri[2]]);
+  const std::vector<Vec3>& at = f.master->vertices;
+  const double face_size = longest_edge(at[tri[0]], at[tri[1]], at[tri[2]]);
   if (face_size <= f.slave_model->median_edge) return false;
   const Vec3 n_slave = f.r_slave_to_master.transpose() * f.master->tri_normal[t];
   const auto& adj = f.slave_model->vertex_triangles;
@@ -702,7 +703,9 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
   int accepted = 0;
   for (const Candidate& c : *tris) {
     const Located* best = accepted == 0 ? nullptr : out;
-    if (ExamineTriangle(f, c, p, dir, facing, faces_of, previous, parting, poly_normal, best, out) && ++accepted >= wanted) break;
+    if (ExamineTriangle(f, c, p, dir, facing, faces_of, previous, parting, poly_normal, best, out) &&
+        ++accepted >= wanted)
+      break;
   }
   return accepted > 0;
 }

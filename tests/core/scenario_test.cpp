@@ -433,7 +433,8 @@ TEST_F(ScenarioFiles, RefusesKeysThatWouldHaveNoEffect) {
   // and the other way round: the specified search without its direction (it quietly used -x)
   Json no_direction = Good();
   no_direction["contact"].erase("specified_direction");
-  EXPECT_NE(ExpectRefused(no_direction, "contact.specified_direction").find("expected with \"search_direction\": \"specified\""),
+  EXPECT_NE(ExpectRefused(no_direction, "contact.specified_direction")
+                .find("expected with \"search_direction\": \"specified\""),
             std::string::npos);
   for (const char* key : {"pushback_reduction", "pushback_reduce_limit"}) {
     Json version3 = Good();

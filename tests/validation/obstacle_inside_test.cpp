@@ -181,7 +181,8 @@ struct CubeRun {
 CubeRun RunCubeIntoBox(double heading) {
   const double turn = heading * u::kDegree;
   char json[2048];
-  std::snprintf(json, sizeof json, R"({"units": "US", "time": {"step": 0.0005, "duration": 2.0, "stop_at_separation": false},
+  std::snprintf(json, sizeof json, R"({"units": "US",
+    "time": {"step": 0.0005, "duration": 2.0, "stop_at_separation": false},
     "bodies": [{"name": "cube", "mesh": {"box": {"length": 10, "width": 10, "height": 10, "segments": [3, 3, 3]}},
       "restitution": 0.1, "friction": 0.5, "weight": 200, "stiffness": {"default": {"A": 5000, "B": 2000}},
       "initial": {"position": [%.17g, %.17g, -30], "heading": %g, "speed": 80,
