@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,25 @@ namespace dymesh {
 namespace {
 
 namespace u = units;
+
+// a scenario's JSON text run to its end, with its summary and assessment (the simulation kept for its
+// states)
+struct AssessedRun {
+  std::shared_ptr<const accel::EmbreeDevice> device;
+  std::unique_ptr<Simulation> sim;
+  Summary summary;
+  RunAssessment assessment;
+};
+AssessedRun RunAndAssess(const char* json, const std::string& file) {
+  const Scenario s = ParseScenario(json, file);
+  AssessedRun r;
+  r.device = std::make_shared<const accel::EmbreeDevice>();
+  r.sim = std::make_unique<Simulation>(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(r.device));
+  r.sim->Run();
+  r.summary = Summarize(*r.sim);
+  r.assessment = AssessRun(*r.sim, r.summary);
+  return r;
+}
 
 struct Outcome {
   double intrusion = 0.0;  // [in] the pole's near side behind the box's rest front, where the run ended
@@ -70,12 +90,10 @@ Outcome RunBoxIntoPole(const BoxRun& run) {
     "contact": {"passes_per_step": %d, "search_direction": "%s"}, "bodies": [%s, %s]})",
                 run.step, run.carried_on ? 3.0 : 0.6, run.carried_on ? "false" : "true", run.passes, run.search.c_str(),
                 run.pole_first ? pole : box, run.pole_first ? box : pole);
-  const Scenario s = ParseScenario(json, "box_into_pole.json");
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  const Summary summary = Summarize(sim);
-  const RunAssessment assessment = AssessRun(sim, summary);
+  const AssessedRun ran = RunAndAssess(json, "box_into_pole.json");
+  const Simulation& sim = *ran.sim;
+  const Summary& summary = ran.summary;
+  const RunAssessment& assessment = ran.assessment;
   const int ib = run.pole_first ? 1 : 0, ip = 1 - ib;
   Outcome o;
   // the pole's near side in the box's frame (planar: the box turns about z only)
@@ -192,12 +210,10 @@ CubeRun RunCubeIntoBox(double heading) {
       "initial": {"position": [0, 0, -31], "heading": %g}}]})",
                 -300 * std::cos(turn) - 10 * std::sin(turn), -300 * std::sin(turn) + 10 * std::cos(turn), heading,
                 heading);
-  const Scenario s = ParseScenario(json, "cube_into_box.json");
-  auto device = std::make_shared<const accel::EmbreeDevice>();
-  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
-  sim.Run();
-  const Summary summary = Summarize(sim);
-  const RunAssessment assessment = AssessRun(sim, summary);
+  const AssessedRun ran = RunAndAssess(json, "cube_into_box.json");
+  const Simulation& sim = *ran.sim;
+  const Summary& summary = ran.summary;
+  const RunAssessment& assessment = ran.assessment;
   CubeRun r;
   // the box's deepest crush by the end among its rest nodes within 10 in of a point across the line
   // from the box's back (where the cube comes in), its rest frame [in]
