@@ -189,8 +189,10 @@ TEST(ObstacleInside, PoleTheBoxCrushedAroundIsNotMarked) {
 // 200 lb (A 5000, B 2000 lb/in) at 80 mph into a 200 x 80 x 60 in, 5000 lb box (A 300, B 100, 3 in
 // cells), the scene turned `heading` degrees, run 2 s without the stop. The test's own measure: how
 // far the cube's centre went past the box's back face (where it comes in), at any recorded state with
-// the centre inside the box's rest shape, beyond the box's deepest crush within 10 in across that line.
-// Turned 10 deg the cube goes through the box's faces and leaves by its side; unturned it stops
+// the centre inside the box's rest shape, beyond the box's deepest crush within 10 in across that line
+// (the cube's width: the crush the cube itself could have made). The bar is the search's reach, as for
+// the pole above. Turned 10 deg the cube goes through the box's faces and leaves by its side; unturned
+// it stops
 struct CubeRun {
   double inside_beyond_crush = -INFINITY;  // [in]
   bool inside = false, voided = false;
