@@ -27,31 +27,34 @@ std::array<RigidState, 2> ContactEngine::TrialMotion(const PairLoads& p, double 
   return trial;
 }
 
+Vec3 ContactEngine::RelativeVelocityAt(const PairLoads& p, const std::array<RigidState, 2>& trial, int slave_side,
+                                       const ContactPoint& q) const {
+  // both bodies' rates in the earth frame of the step's start, where the points are
+  const int ks = slave_side, km = 1 - slave_side;
+  const Vec3 spin_slave = states_[p.body[ks]].rigid.Rotation() * trial[ks].omega;
+  const Vec3 spin_master = states_[p.body[km]].rigid.Rotation() * trial[km].omega;
+  return trial[ks].velocity + spin_slave.cross(q.arm_slave) - trial[km].velocity - spin_master.cross(q.arm_master);
+}
+
 double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights,
                                   const std::array<RigidState, 2>& trial, double min_slide, PairLoads* p) const {
   // spec §7 SlaveNodeFriction against the slide at the end of the step, not at its start: a slide
   // friction stopped in the last step starts this one at rest, pointing nowhere, while the normal
   // loads drive it again (read at the step's start, friction held the offset pole's slide every
-  // other step: mu N, then 6 lbf). Both bodies' rates in the earth frame of the step's start, where
-  // the points are
-  Vec3 velocity[2], spin[2];
-  for (int k = 0; k < 2; ++k) {
-    velocity[k] = trial[k].velocity;
-    spin[k] = states_[p->body[k]].rigid.Rotation() * trial[k].omega;
-  }
+  // other step: mu N, then 6 lbf)
+  const double mu = 0.5 * (models_[p->body[0]]->friction + models_[p->body[1]]->friction);
   double magnitude = 0.0;  // [N]
   for (std::size_t i = 0; i < sums.size(); ++i) {
-    const int ks = sums[i].slave == p->body[0] ? 0 : 1, km = 1 - ks;
+    const int ks = sums[i].slave == p->body[0] ? 0 : 1;
     Wrench friction;
     double limits = 0.0;
-    // determinism: the pass's points in node order
-    for (const FrictionPoint& q : sums[i].friction_points) {
-      const Vec3 v_rel = velocity[ks] + spin[ks].cross(q.arm_slave) - velocity[km] - spin[km].cross(q.arm_master);
-      const Vec3 v_slide = AlongSurface(v_rel, q.normal);
-      const double slide = v_slide.norm();
-      if (slide <= min_slide) continue;
-      friction.Add(-(q.limit / slide) * v_slide, q.arm_slave, q.arm_master);
-      limits += q.limit;
+    // determinism: the pass's points in node order; mu times the normal force each carried over the step
+    for (const ContactPoint& q : sums[i].points) {
+      const Vec3 v_slide = AlongSurface(RelativeVelocityAt(*p, trial, ks, q), q.normal);
+      const double slide = v_slide.norm(), limit = mu * q.Carried();
+      if (slide <= min_slide || !(limit > 0.0)) continue;
+      friction.Add(-(limit / slide) * v_slide, q.arm_slave, q.arm_master);
+      limits += limit;
     }
     friction.AddToPair(weights[i], ks, p->friction_force, p->friction_moment);
     magnitude += weights[i] * limits;
@@ -59,11 +62,12 @@ double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::
   return magnitude;
 }
 
-double ContactEngine::FrictionPower(const PairLoads& p, const std::array<RigidState, 2>& trial) const {
+double ContactEngine::PairPower(const PairLoads& p, const Vec3 (&force)[2], const Vec3 (&moment)[2],
+                                const std::array<RigidState, 2>& trial) const {
   double power = 0.0;  // [W]
   for (int k = 0; k < 2; ++k) {
     const Mat3 r = states_[p.body[k]].rigid.Rotation();
-    power += p.friction_force[k].dot(trial[k].velocity) + p.friction_moment[k].dot(r * trial[k].omega);
+    power += force[k].dot(trial[k].velocity) + moment[k].dot(r * trial[k].omega);
   }
   return power;
 }
@@ -78,7 +82,8 @@ void ContactEngine::PairFriction(const std::vector<PassSums>& sums, const std::v
   // there (static friction), every sliding point takes friction. Otherwise only points sliding past
   // the band do. (Read only point by point, the band switched friction off for single steps when a
   // slide hovered at it: the points' slides just under it, their weighted mean just over)
-  const bool slides = magnitude > 0.0 && -FrictionPower(*p, trial) / magnitude > options_.friction_null_band;
+  const double power = PairPower(*p, p->friction_force, p->friction_moment, trial);  // [W]
+  const bool slides = magnitude > 0.0 && -power / magnitude > options_.friction_null_band;
   if (!slides && !*held) {
     ClearFriction(p);
     magnitude = AddFriction(sums, weights, trial, options_.friction_null_band, p);
@@ -93,7 +98,7 @@ bool ContactEngine::LimitFriction(double dt, double magnitude, const std::array<
   // other way). The friction wrench's power on the trial motion (the end of the step without it),
   // against the power it adds to it over dt (the bodies' inverse masses as the host moves them),
   // gives the largest scale that brings the motion it opposes to rest and not beyond
-  const double power = FrictionPower(*p, trial);  // [W]
+  const double power = PairPower(*p, p->friction_force, p->friction_moment, trial);  // [W]
   double gain = 0.0;                              // [W]
   for (int k = 0; k < 2; ++k) {
     const int body = p->body[k];

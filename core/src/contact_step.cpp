@@ -211,6 +211,7 @@ StepResult ContactEngine::Step(double dt) {
       }
       const std::vector<double> weights = PassWeights(sums);
       result.pairs.push_back(CombinePasses(a, b, sums, weights, rigid_nodes));
+      EndApproachWithinStep(&sums, weights, rigid_nodes, dt, &result.pairs.back());
       // the pair's normal impulse, each side in the other's frame
       const Vec3 on_a = result.pairs.back().normal_force[0] * dt;
       pushed_[ab] += states_[b].rigid.Rotation().transpose() * on_a;
@@ -375,8 +376,9 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   Vec3 delta;
   bool holding = false;
   LayerShare layers;
+  double turn_force = 0.0;
   const double node_force = RestoreNode(f, v, found ? &hit : nullptr, closing_unfound, free_gap, dt, &out->diag,
-                                        &out->sums.law_energy, &delta, &holding, &layers);
+                                        &out->sums.law_energy, &delta, &holding, &layers, &turn_force);
   if (delta != f.slave->delta[v]) {
     // the new crush waits in pending_delta_ until committed (with the sibling pass, or at once)
     (*f.pending)[v] = delta;
@@ -400,8 +402,9 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   const Vec3 normal_earth = f.r_master * hit.normal;
   out->sums.normal.Add(node_force * normal_earth, arm_slave, arm_master);
   // spec §7 SlaveNodeFriction acts here, mu times the normal force (its direction once the pair's
-  // normal loads are known: AddFriction)
-  if (f.mu > 0.0) out->friction_points.push_back({arm_slave, arm_master, normal_earth, f.mu * node_force});
+  // normal loads are known: AddFriction); spec §6 the loading force ends where the approach does
+  // (EndApproachWithinStep)
+  out->points.push_back({arm_slave, arm_master, normal_earth, node_force, turn_force});
   // spec §5, two crushable layers in series: the interface's work over the step, force times the
   // approach, splits as the layers share a closure at equal pressure (the master's part is its crush
   // at the node, whether or not its own nodes reach the point)
@@ -465,7 +468,7 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
   for (std::size_t c = 0; c < ChunkCount(candidates.size()); ++c) {
     const ChunkSums& part = chunks_[c];
     sums.normal += part.sums.normal;
-    sums.friction_points.insert(sums.friction_points.end(), part.friction_points.begin(), part.friction_points.end());
+    sums.points.insert(sums.points.end(), part.points.begin(), part.points.end());
     sums.touching_area += part.sums.touching_area;
     sums.law_energy += part.sums.law_energy;
     sums.slave_share_work += part.sums.slave_share_work;
@@ -729,7 +732,7 @@ double ContactEngine::DistanceToMaster(const PassFrame& f, int v, double radius,
 double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound,
                                   double free_gap, double dt,
                                   ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding,
-                                  LayerShare* layers_out) {
+                                  LayerShare* layers_out, double* turn_force) {
   BodyState& s = *f.slave;
   const BodyModel& m = *f.slave_model;
   const Stiffness& k = m.VertexStiffness(v);
@@ -872,6 +875,19 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
       touching ? area * std::min(NodePressure(s.unload[v], true, k, new_deflection, s.delta_max[v], e, options_),
                                  interface_pressure)
                : 0.0;
+  // spec §6: a node on its loading curve carries that force while the surfaces approach; once they
+  // stop, its rebound force from the peak it reached (none while it cannot unload yet). The pair turns
+  // it there (EndApproachWithinStep)
+  *turn_force = force;
+  const UnloadState now = s.unload[v];
+  if (force > 0.0 && (now == UnloadState::kCannotUnload || now == UnloadState::kStartUnload ||
+                      now == UnloadState::kCanUnload)) {
+    const double rebound = now == UnloadState::kCannotUnload
+                               ? 0.0
+                               : ReboundPressure(k, new_deflection, s.delta_max[v], e, options_.null_band,
+                                                 options_.rebound_law);
+    *turn_force = std::min(force, area * std::min(rebound, interface_pressure));
+  }
   // spec §5: the slave's part of the interface's work where it touches a deformable master
   if (touching && !f.master_model->rigid) *layers_out = layers ? *layers : LayersAtNode(f, v, *hit);
 

@@ -116,12 +116,17 @@ class ContactEngine {
     // the other the opposite force at the same points (its moment about its own CG)
     void AddToPair(double weight, int slave_side, Vec3 (&force)[2], Vec3 (&moment)[2]) const;
   };
-  // a touching slave node where friction acts (spec §7): the point both bodies are loaded at, the
-  // master's outward normal there and mu times the node's normal force, earth frame
-  struct FrictionPoint {
+  // a touching slave node: the point both bodies are loaded at, the master's outward normal there
+  // (earth frame), its normal force, the force it keeps once the approach ends (its turn force), and
+  // the part of the step it loaded for (EndApproachWithinStep); friction acts at it (spec §7)
+  struct ContactPoint {
     Vec3 arm_slave, arm_master;  // [m] from each body's CG
     Vec3 normal;
-    double limit = 0.0;  // [N]
+    double force = 0.0;       // [N]
+    double turn_force = 0.0;  // [N]
+    double before_turn = 1.0;
+    // [N] over the step
+    double Carried() const { return before_turn < 1.0 ? turn_force + before_turn * (force - turn_force) : force; }
   };
   // one pass's sums: normal loads of its slave's nodes, and where friction acts
   struct PassSums {
@@ -132,18 +137,18 @@ class ContactEngine {
     double slave_share_work = 0.0, master_share_work = 0.0;  // [J] interface work at its nodes, split
     double master_share_force = 0.0;  // [N] node forces at the nodes that touched a deformable master
     double master_share_moment = 0.0;  // [N m] the same times the master's share of each one's penetration
-    std::vector<FrictionPoint> friction_points;  // ascending node order
+    std::vector<ContactPoint> points;  // its touching nodes, ascending node order
   };
   // what one chunk of slave nodes produced (folded in chunk order); buffers reused across passes
   struct ChunkSums {
     PassSums sums;
     ContactDiagnostics diag;
     std::vector<int> touching, holding, located, moved;  // ascending node indices
-    std::vector<FrictionPoint> friction_points;          // ascending node order
+    std::vector<ContactPoint> points;                    // ascending node order
     std::vector<Candidate> scratch;                      // candidate triangles of one node
     void Clear() {
       sums = PassSums{};
-      friction_points.clear();
+      points.clear();
       diag = ContactDiagnostics{};
       touching.clear();
       holding.clear();
@@ -183,11 +188,22 @@ class ContactEngine {
   // returns their sum of mu N [N]
   double AddFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights,
                      const std::array<RigidState, 2>& trial, double min_slide, PairLoads* pair) const;
-  // the power of the pair's friction on the trial motion [W]
-  double FrictionPower(const PairLoads& pair, const std::array<RigidState, 2>& trial) const;
   // Coulomb's bound: never more than stops the slide; true when the friction leaves the slide under
   // the band (held in the next step)
   bool LimitFriction(double dt, double magnitude, const std::array<RigidState, 2>& trial, PairLoads* pair) const;
+  // spec §6 (contact_turn.cpp): in the step in which the approach at a touching node ends, its loading
+  // force acts over the part of the step before the turn, its turn force after it (each point's
+  // before_turn, from the pair's trial motion with and without those loads); a rigid body's nodes,
+  // pushing only while the faces' crush grows, likewise as a whole
+  void EndApproachWithinStep(std::vector<PassSums>* sums, const std::vector<double>& weights,
+                             const PassSums& rigid_nodes, double dt, PairLoads* pair) const;
+  // the velocity of the slave's point q relative to the master's, earth frame, on the pair's trial
+  // motion (q from a pass whose slave is pair.body[slave_side])
+  Vec3 RelativeVelocityAt(const PairLoads& pair, const std::array<RigidState, 2>& trial, int slave_side,
+                          const ContactPoint& q) const;
+  // the power of loads on a pair's bodies on the trial motion [W] (rates at the step's start pose)
+  double PairPower(const PairLoads& pair, const Vec3 (&force)[2], const Vec3 (&moment)[2],
+                   const std::array<RigidState, 2>& trial) const;
   Vec3 SearchLine(const PassFrame& f, int v, const Vec3& v_rel, const Vec3& inward) const;
   // `along`: a search direction (master frame) instead of the method's, or null
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
@@ -212,10 +228,12 @@ class ContactEngine {
   // `closing_unfound`, the bodies still close on the node (along its last contact normal, or its crush
   // while it holds a spring), and `free_gap`, how far the node may spring back (the distance to a
   // rigid master's surface). *holding: the node was held with a spring still stored (spec §6);
-  // *layers: where it touches a deformable master, the two layers' equal-pressure split (spec §5)
+  // *layers: where it touches a deformable master, the two layers' equal-pressure split (spec §5);
+  // *turn_force: the force it carries once the surfaces stop approaching (its rebound force from the
+  // peak it reached while it loads, else its force)
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding,
-                     LayerShare* layers);
+                     LayerShare* layers, double* turn_force);
   void CommitPending(int body);
   // slave node v's layer and a deformable master's at `hit`, sharing its penetration at equal pressure
   // (spec §5), from the node's crush at the step's start
