@@ -27,13 +27,19 @@ std::array<RigidState, 2> ContactEngine::TrialMotion(const PairLoads& p, double 
   return trial;
 }
 
-Vec3 ContactEngine::RelativeVelocityAt(const PairLoads& p, const std::array<RigidState, 2>& trial, int slave_side,
-                                       const ContactPoint& q) const {
+ContactEngine::PairRates ContactEngine::RatesOf(const PairLoads& p, const std::array<RigidState, 2>& trial) const {
   // both bodies' rates in the earth frame of the step's start, where the points are
+  PairRates rates;
+  for (int k = 0; k < 2; ++k) {
+    rates.velocity[k] = trial[k].velocity;
+    rates.spin[k] = states_[p.body[k]].rigid.Rotation() * trial[k].omega;
+  }
+  return rates;
+}
+
+Vec3 ContactEngine::RelativeVelocityAt(const PairRates& r, int slave_side, const ContactPoint& q) {
   const int ks = slave_side, km = 1 - slave_side;
-  const Vec3 spin_slave = states_[p.body[ks]].rigid.Rotation() * trial[ks].omega;
-  const Vec3 spin_master = states_[p.body[km]].rigid.Rotation() * trial[km].omega;
-  return trial[ks].velocity + spin_slave.cross(q.arm_slave) - trial[km].velocity - spin_master.cross(q.arm_master);
+  return r.velocity[ks] + r.spin[ks].cross(q.arm_slave) - r.velocity[km] - r.spin[km].cross(q.arm_master);
 }
 
 double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights,
@@ -43,6 +49,7 @@ double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::
   // loads drive it again (read at the step's start, friction held the offset pole's slide every
   // other step: mu N, then 6 lbf)
   const double mu = 0.5 * (models_[p->body[0]]->friction + models_[p->body[1]]->friction);
+  const PairRates rates = RatesOf(*p, trial);
   double magnitude = 0.0;  // [N]
   for (std::size_t i = 0; i < sums.size(); ++i) {
     const int ks = sums[i].slave == p->body[0] ? 0 : 1;
@@ -50,7 +57,7 @@ double ContactEngine::AddFriction(const std::vector<PassSums>& sums, const std::
     double limits = 0.0;
     // determinism: the pass's points in node order; mu times the normal force each carried over the step
     for (const ContactPoint& q : sums[i].points) {
-      const Vec3 v_slide = AlongSurface(RelativeVelocityAt(*p, trial, ks, q), q.normal);
+      const Vec3 v_slide = AlongSurface(RelativeVelocityAt(rates, ks, q), q.normal);
       const double slide = v_slide.norm(), limit = mu * q.Carried();
       if (slide <= min_slide || !(limit > 0.0)) continue;
       friction.Add(-(limit / slide) * v_slide, q.arm_slave, q.arm_master);

@@ -20,6 +20,7 @@ double BeforeTurn(double with_loading, double without) {
 
 void ContactEngine::EndApproachWithinStep(std::vector<PassSums>* sums, const std::vector<double>& weights,
                                           const PassSums& rigid_nodes, double dt, PairLoads* p) const {
+  // opt-in until a body at rest in contact keeps its faces (README, Known limits)
   if (!options_.turn_within_step) return;
   // the pair's loads without the loading parts (force less turn force) of its points, and without the
   // rigid body's nodes' pushes, which act only while a face's crush grows
@@ -40,13 +41,14 @@ void ContactEngine::EndApproachWithinStep(std::vector<PassSums>* sums, const std
   // (Held whole over the step, a flat face's constant A turned a parking-lot approach round: a 3000 lb
   // box into a wall at 0.5 mph with e = 0 left at 0.16 of its speed, at 0.1 mph at 0.93)
   const std::array<RigidState, 2> with_all = TrialMotion(*p, dt), without = TrialMotion(rest, dt);
+  const PairRates rates_with = RatesOf(*p, with_all), rates_without = RatesOf(*p, without);
   bool turned = false;
   for (PassSums& pass : *sums) {
     const int ks = pass.slave == p->body[0] ? 0 : 1;
     for (ContactPoint& q : pass.points) {
       if (!(q.force > q.turn_force)) continue;
-      q.before_turn = BeforeTurn(RelativeVelocityAt(*p, with_all, ks, q).dot(q.normal),
-                                 RelativeVelocityAt(*p, without, ks, q).dot(q.normal));
+      q.before_turn = BeforeTurn(RelativeVelocityAt(rates_with, ks, q).dot(q.normal),
+                                 RelativeVelocityAt(rates_without, ks, q).dot(q.normal));
       turned = turned || q.before_turn < 1.0;
     }
   }

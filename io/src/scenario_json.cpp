@@ -381,7 +381,8 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
   if (const Json* v = Find(j, "rebound_law"))
     o->rebound_law = ReadChoice<ReboundLaw>(src, *v, Join(path, "rebound_law"),
                                             {{"scaled", ReboundLaw::kScaled}, {"literal", ReboundLaw::kLiteral}});
-  if (const Json* v = Find(j, "turn_within_step")) o->turn_within_step = ReadBool(src, *v, Join(path, "turn_within_step"));
+  if (const Json* v = Find(j, "turn_within_step"))
+    o->turn_within_step = ReadBool(src, *v, Join(path, "turn_within_step"));
   if (const Json* v = Find(j, "calc_nabor_interval"))
     o->calc_nabor_interval =
         ReadInt(src, *v, Join(path, "calc_nabor_interval"), 1, 1000000, "expected an integer >= 1");

@@ -197,10 +197,14 @@ class ContactEngine {
   // pushing only while the faces' crush grows, likewise as a whole
   void EndApproachWithinStep(std::vector<PassSums>* sums, const std::vector<double>& weights,
                              const PassSums& rigid_nodes, double dt, PairLoads* pair) const;
-  // the velocity of the slave's point q relative to the master's, earth frame, on the pair's trial
-  // motion (q from a pass whose slave is pair.body[slave_side])
-  Vec3 RelativeVelocityAt(const PairLoads& pair, const std::array<RigidState, 2>& trial, int slave_side,
-                          const ContactPoint& q) const;
+  // a pair's two bodies' velocities and spins on a trial motion, earth frame of the step's start
+  struct PairRates {
+    Vec3 velocity[2], spin[2];
+  };
+  PairRates RatesOf(const PairLoads& pair, const std::array<RigidState, 2>& trial) const;
+  // the velocity of the slave's point q relative to the master's (q from a pass whose slave is the
+  // pair's body slave_side)
+  static Vec3 RelativeVelocityAt(const PairRates& rates, int slave_side, const ContactPoint& q);
   // the power of loads on a pair's bodies on the trial motion [W] (rates at the step's start pose)
   double PairPower(const PairLoads& pair, const Vec3 (&force)[2], const Vec3 (&moment)[2],
                    const std::array<RigidState, 2>& trial) const;
