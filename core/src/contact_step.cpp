@@ -404,7 +404,8 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   // spec §7 SlaveNodeFriction acts here, mu times the normal force (its direction once the pair's
   // normal loads are known: AddFriction); spec §6 the loading force ends where the approach does
   // (EndApproachWithinStep)
-  out->points.push_back({arm_slave, arm_master, normal_earth, node_force, turn_force});
+  if (f.mu > 0.0 || options_.turn_within_step)
+    out->points.push_back({arm_slave, arm_master, normal_earth, node_force, turn_force});
   // spec §5, two crushable layers in series: the interface's work over the step, force times the
   // approach, splits as the layers share a closure at equal pressure (the master's part is its crush
   // at the node, whether or not its own nodes reach the point)
@@ -880,8 +881,8 @@ double ContactEngine::RestoreNode(const PassFrame& f, int v, const Located* hit,
   // it there (EndApproachWithinStep)
   *turn_force = force;
   const UnloadState now = s.unload[v];
-  if (force > 0.0 && (now == UnloadState::kCannotUnload || now == UnloadState::kStartUnload ||
-                      now == UnloadState::kCanUnload)) {
+  if (options_.turn_within_step && force > 0.0 &&
+      (now == UnloadState::kCannotUnload || now == UnloadState::kStartUnload || now == UnloadState::kCanUnload)) {
     const double rebound = now == UnloadState::kCannotUnload
                                ? 0.0
                                : ReboundPressure(k, new_deflection, s.delta_max[v], e, options_.null_band,

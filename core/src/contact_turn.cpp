@@ -22,17 +22,24 @@ void ContactEngine::EndApproachWithinStep(std::vector<PassSums>* sums, const std
                                           const PassSums& rigid_nodes, double dt, PairLoads* p) const {
   // opt-in until a body at rest in contact keeps its faces (README, Known limits)
   if (!options_.turn_within_step) return;
-  // the pair's loads without the loading parts (force less turn force) of its points, and without the
-  // rigid body's nodes' pushes, which act only while a face's crush grows
+  // the loading parts (force less turn force) of the passes' points, weighted like the pair's normal
+  // load, times `sign`, each scaled by the part of the step it acted for or not at all
+  auto add_loading = [&](double sign, bool before_turn_only, PairLoads* to) {
+    for (std::size_t i = 0; i < sums->size(); ++i) {
+      Wrench loading;
+      for (const ContactPoint& q : (*sums)[i].points)
+        loading.Add((before_turn_only ? q.before_turn : 1.0) * (q.force - q.turn_force) * q.normal, q.arm_slave,
+                    q.arm_master);
+      loading.AddToPair(sign * weights[i], (*sums)[i].slave == p->body[0] ? 0 : 1, to->normal_force,
+                        to->normal_moment);
+    }
+  };
+  // the pair's loads without those loading parts, and without the rigid body's nodes' pushes, which act
+  // only while a face's crush grows
   PairLoads rest = *p, rigid = PairLoads{};
   rigid.body[0] = p->body[0];
   rigid.body[1] = p->body[1];
-  for (std::size_t i = 0; i < sums->size(); ++i) {
-    Wrench loading;
-    for (const ContactPoint& q : (*sums)[i].points)
-      loading.Add((q.force - q.turn_force) * q.normal, q.arm_slave, q.arm_master);
-    loading.AddToPair(-weights[i], (*sums)[i].slave == p->body[0] ? 0 : 1, rest.normal_force, rest.normal_moment);
-  }
+  add_loading(-1.0, false, &rest);
   const int rigid_slave = rigid_nodes.slave == p->body[0] ? 0 : 1;
   rigid_nodes.normal.AddToPair(1.0, rigid_slave, rigid.normal_force, rigid.normal_moment);
   rigid_nodes.normal.AddToPair(-1.0, rigid_slave, rest.normal_force, rest.normal_moment);
@@ -57,17 +64,9 @@ void ContactEngine::EndApproachWithinStep(std::vector<PassSums>* sums, const std
                                        PairPower(*p, rigid.normal_force, rigid.normal_moment, without));
   if (!turned && rigid_turn >= 1.0) return;
   // the step's normal loads: each point's force over the step, the rigid nodes' share
-  for (std::size_t i = 0; i < sums->size(); ++i) {
-    Wrench loading;
-    for (const ContactPoint& q : (*sums)[i].points)
-      loading.Add(q.before_turn * (q.force - q.turn_force) * q.normal, q.arm_slave, q.arm_master);
-    loading.AddToPair(weights[i], (*sums)[i].slave == p->body[0] ? 0 : 1, rest.normal_force, rest.normal_moment);
-  }
+  add_loading(1.0, true, &rest);
   rigid_nodes.normal.AddToPair(rigid_turn, rigid_slave, rest.normal_force, rest.normal_moment);
-  for (int k = 0; k < 2; ++k) {
-    p->normal_force[k] = rest.normal_force[k];
-    p->normal_moment[k] = rest.normal_moment[k];
-  }
+  *p = rest;
 }
 
 }  // namespace dymesh

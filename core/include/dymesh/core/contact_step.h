@@ -128,7 +128,7 @@ class ContactEngine {
     // [N] over the step
     double Carried() const { return before_turn < 1.0 ? turn_force + before_turn * (force - turn_force) : force; }
   };
-  // one pass's sums: normal loads of its slave's nodes, and where friction acts
+  // one pass's sums: normal loads of its slave's nodes, and the points they act at
   struct PassSums {
     int master = 0, slave = 0;
     Wrench normal;
@@ -137,7 +137,7 @@ class ContactEngine {
     double slave_share_work = 0.0, master_share_work = 0.0;  // [J] interface work at its nodes, split
     double master_share_force = 0.0;  // [N] node forces at the nodes that touched a deformable master
     double master_share_moment = 0.0;  // [N m] the same times the master's share of each one's penetration
-    std::vector<ContactPoint> points;  // its touching nodes, ascending node order
+    std::vector<ContactPoint> points;  // its touching nodes (with friction or the turn on), ascending node order
   };
   // what one chunk of slave nodes produced (folded in chunk order); buffers reused across passes
   struct ChunkSums {
@@ -233,8 +233,8 @@ class ContactEngine {
   // while it holds a spring), and `free_gap`, how far the node may spring back (the distance to a
   // rigid master's surface). *holding: the node was held with a spring still stored (spec §6);
   // *layers: where it touches a deformable master, the two layers' equal-pressure split (spec §5);
-  // *turn_force: the force it carries once the surfaces stop approaching (its rebound force from the
-  // peak it reached while it loads, else its force)
+  // *turn_force: the force it carries once the surfaces stop approaching (with turn_within_step, its
+  // rebound force from the peak it reached while it loads; else its force)
   double RestoreNode(const PassFrame& f, int v, const Located* hit, bool closing_unfound, double free_gap, double dt,
                      ContactDiagnostics* diag, double* law_energy, Vec3* new_delta, bool* holding,
                      LayerShare* layers, double* turn_force);
