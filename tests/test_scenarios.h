@@ -71,6 +71,19 @@ inline std::vector<ScenarioVariant> ContactVariants() {
   };
 }
 
+// ContactVariants plus the first body's mesh 1:4 (one more subdivision) and the bodies listed the other
+// way round, for a scenario whose first body is placed at contact with its second
+inline std::vector<ScenarioVariant> ContactVariantsWithMeshAndOrder(const std::string& mesh_label,
+                                                                    const std::string& order_label) {
+  std::vector<ScenarioVariant> variants = ContactVariants();
+  variants.push_back({mesh_label, [](Scenario* s) { s->bodies[0].mesh.subdivisions += 1; }});
+  variants.push_back({order_label, [](Scenario* s) {
+                        std::swap(s->bodies[0], s->bodies[1]);
+                        s->bodies[1].place_at_contact->with = 0;  // the other body, now listed first
+                      }});
+  return variants;
+}
+
 // an empty scenario in US units: its name in error messages, time step [s] and duration [s]
 inline Scenario UsScenario(const std::string& file, double time_step, double duration) {
   Scenario s;

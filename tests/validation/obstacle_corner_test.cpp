@@ -89,12 +89,8 @@ TEST(ObstacleCorner, BlockMeshingDoesNotChangeTheImpact) {
 // own normal; taking any face the corner's own faces meet, it pushed the corner out through the block
 TEST(ObstacleCorner, OneCellBlockForEverySearchStopRulePassCountStepOrderAndFrame) {
   const CornerRun reference = RunCorner(CornerScenario({16, 6, 3}));
-  std::vector<testing::ScenarioVariant> variants = testing::ContactVariants();
-  variants.push_back({"box mesh 1:4", [](Scenario* s) { s->bodies[0].mesh.subdivisions += 1; }});
-  variants.push_back({"block first", [](Scenario* s) {
-                        std::swap(s->bodies[0], s->bodies[1]);
-                        s->bodies[1].place_at_contact->with = 0;  // the block, now listed first
-                      }});
+  const std::vector<testing::ScenarioVariant> variants =
+      testing::ContactVariantsWithMeshAndOrder("box mesh 1:4", "block first");
   for (const auto& [label, vary] : variants) {
     if (label == "polygon normal" || label == "local average normal") continue;
     Scenario s = CornerScenario({1, 1, 1});
