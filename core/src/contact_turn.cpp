@@ -20,8 +20,7 @@ double BeforeTurn(double with_loading, double without) {
 
 void ContactEngine::EndApproachWithinStep(std::vector<PassSums>* sums, const std::vector<double>& weights,
                                           const PassSums& rigid_nodes, double dt, PairLoads* p) const {
-  // opt-in until a body at rest in contact keeps its faces (README, Known limits)
-  if (!options_.turn_within_step) return;
+  if (!options_.turn_within_step) return;  // the loads held over the whole step (before 2026-11-27)
   // the loading parts (force less turn force) of the passes' points, weighted like the pair's normal
   // load, times `sign`, each scaled by the part of the step it acted for or not at all
   auto add_loading = [&](double sign, bool before_turn_only, PairLoads* to) {

@@ -331,5 +331,44 @@ TEST(RoundPole, BoxCrushFollowsTheColumnClosedForm) {
   }
 }
 
+// A box stopped against the pole with e = 0 (3 in cells, 1.5 in off its axis) slides on past it,
+// turning, with a touch of under 1e-4 of its peak contact force to the run's end (the two bodies'
+// loads summed: measured 0.007 of 40,000 lbf): `complete`, warned `light_contact_at_end` (kLightContactShare). The same run cut at its
+// peak force ends pushing: `ended_in_contact`
+TEST(RoundPole, TouchAfterTheStopIsALightContact) {
+  BoxPole c{3, 10.0, 1.5};
+  c.duration = 0.3;
+  auto run = [](const Scenario& s, double* peak_time) {
+    auto device = std::make_shared<const accel::EmbreeDevice>();
+    Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
+    sim.Run();
+    auto load = [](const Sample& sample) {
+      double f = 0.0;
+      for (const BodySample& b : sample.bodies) f += b.loads.force_earth.norm();
+      return f;
+    };
+    double peak = 0.0;
+    for (const Sample& sample : sim.history()) {
+      if (load(sample) <= peak) continue;
+      peak = load(sample);
+      *peak_time = sample.time;
+    }
+    const double end = load(sim.history().back());
+    std::printf("[measured] box stopped against the pole 1.5 in off: load at %.3f s %.3g lbf of its %.0f lbf peak\n",
+                sim.time(), end / u::kPoundForce, peak / u::kPoundForce);
+    return std::make_pair(Summarize(sim), end / peak);
+  };
+  double peak_time = 0.0, unused = 0.0;
+  const auto [touching, share] = run(BoxIntoPole(c), &peak_time);
+  EXPECT_GT(share, 0.0);  // the case: still touching at the end
+  EXPECT_LE(share, kLightContactShare);
+  EXPECT_EQ(touching.status, RunStatus::kComplete);
+  bool warned = false;
+  for (const RunWarning& w : touching.warnings) warned = warned || w.code == "light_contact_at_end";
+  EXPECT_TRUE(warned);
+  c.duration = peak_time;
+  EXPECT_EQ(run(BoxIntoPole(c), &unused).first.status, RunStatus::kEndedInContact);
+}
+
 }  // namespace
 }  // namespace dymesh

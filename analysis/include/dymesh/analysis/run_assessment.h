@@ -38,6 +38,11 @@ bool WarningVoidsResults(std::string_view code);
 /// Relative speed [m/s] below which bodies still in contact at the end count as at rest.
 inline constexpr double kRestSpeed = 0.05;
 
+/// Share of their peak contact force under which bodies still touching at the end no longer push each
+/// other: acting for ten contact durations after a half-sine pulse (mean 0.64 of the peak) it moves
+/// delta-V by under 0.2 %.
+inline constexpr double kLightContactShare = 1e-4;
+
 /// Status and warnings of a run from its recorded history and summary (the summary's own status and
 /// warnings are not read). The scenario's warnings (implausible values, allowed overlap) come first.
 struct RunAssessment {

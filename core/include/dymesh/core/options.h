@@ -39,7 +39,7 @@ struct ContactOptions {
   double max_grow_unload = 0.25 * units::kInch;              ///< [m] MAX_GROW_UNLOAD: reload growth per step beyond the surfaces' approach
   double friction_null_band = 1.0 * units::kInch;            ///< [m/s] FRICTION_NULL_BAND (spec §7)
   ReboundLaw rebound_law = ReboundLaw::kScaled;
-  bool turn_within_step = false;  ///< spec §6: loading force ends where the approach does (opt-in, README)
+  bool turn_within_step = true;  ///< spec §6: loading force ends where the approach does (README)
   Eigen::Vector3d specified_direction{-1.0, 0.0, 0.0};       ///< pushback direction in the slave body frame (kSpecified)
   int calc_nabor_interval = 5;                               ///< CALC_NABOR_INTERVAL (neighbour-box locator)
   double global_search_box = 0.0;                            ///< [m] GLOBAL_SEARCH_BOX half-size; 0 = SetBoxSize (automatic)
