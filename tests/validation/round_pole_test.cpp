@@ -40,6 +40,7 @@ struct PoleRun {
   double yaw_radius2 = 0.0;  // [m^2] the car's yaw inertia over its mass
   double restitution = 0.0;
   bool in_contact_at_end = false;
+  RunStatus status = RunStatus::kComplete;
 };
 
 PoleRun RunPole(Scenario s) {
@@ -50,7 +51,7 @@ PoleRun RunPole(Scenario s) {
   const BodyModel& m = sim.engine().model(car);
   const Summary sum = Summarize(sim);
   return {sum.bodies[car].delta_v, sum.energy_balance_error, m.inertia(2, 2) / m.mass, m.restitution,
-          sim.in_contact_at_end()};
+          sim.in_contact_at_end(), sum.status};
 }
 
 // Known answer (impulse-momentum, planar): the pole stops the contact point (e = 0, friction holding
@@ -61,16 +62,21 @@ PoleRun RunPole(Scenario s) {
 // is the rebound's: a node gives back at most its peak force over e delta_max (spec §6), and the
 // loading law A + B delta has F_peak delta_max <= 2 x its work, so the car leaves at most sqrt(2 e) V.
 // The energy balance within 2 % (the bar)
+enum class LowerBar { kHeld, kHeldOrStillPushing, kPrinted };
+
 void ExpectPoleStopsCar(const std::string& label, double offset_in, const std::function<void(Scenario*)>& vary,
-                        bool lower_bar = true) {
+                        LowerBar lower_bar = LowerBar::kHeld) {
   Scenario s = RoundPole(offset_in);
   vary(&s);
   const double speed = 20.0 * u::kMph, d = offset_in * u::kInch;
   const PoleRun r = RunPole(s);
   const double lower = speed * (1.0 - d * d / (r.yaw_radius2 + d * d));
   const double upper = speed * (1.0 + std::sqrt(2.0 * r.restitution));
-  if (lower_bar) {
+  if (lower_bar == LowerBar::kHeld) {
     EXPECT_GT(r.delta_v, lower) << label << ", pole " << offset_in << " in off the centreline";
+  } else if (lower_bar == LowerBar::kHeldOrStillPushing) {
+    EXPECT_TRUE(r.delta_v > lower || r.status == RunStatus::kEndedInContact)
+        << label << ", pole " << offset_in << " in off the centreline: under the bar and not marked";
   }
   EXPECT_LT(r.delta_v, upper) << label << ", pole " << offset_in << " in off the centreline";
   EXPECT_NEAR(r.balance, 0.0, 0.02) << label;
@@ -91,19 +97,24 @@ TEST(RoundPole, StopsTheCarForEverySearchStopRulePassCountStepMeshOrderAndFrame)
   // read the slide at the step's end); printed, held to the upper bar and the balance only
   for (const auto& [label, vary] : variants) {
     for (double offset : {5.0, 14.0})
-      ExpectPoleStopsCar(label, offset, vary, !(label == std::string("polygon normal") && offset == 14.0));
+      ExpectPoleStopsCar(label, offset, vary,
+                         label == std::string("polygon normal") && offset == 14.0 ? LowerBar::kPrinted : LowerBar::kHeld);
   }
 }
 
 // Without friction nothing holds a node on the round face: the car's nodes slide round the pole, which
 // went on between them (0.20 mph of 20 at 5 in off). The pole's own nodes now push the faces it
-// crosses between the car's nodes (CoarseFace tests), and the car stops, with the same bars. (How deep
-// the pole goes before it stops is a known limit: README)
+// crosses between the car's nodes (CoarseFace tests), and the car stops, with the same upper bar. The
+// lower bar's premise, friction holding the contact point, is gone: the car's front wraps round the
+// pole and slides along it, a chaotic case (README, Known limits: shifting the pole 0.01 in at a time
+// moved delta-V 19.4-29.0 mph at 5 in off without the turn within the step, 18.6-28.1 with it, the
+// runs under the bar still pushing at the demo's 0.7 s). So under the bar the run must say it has not
+// finished (`ended_in_contact`). (How deep the pole goes before it stops is a known limit: README)
 TEST(RoundPole, FrictionlessPoleStopsTheCar) {
   for (double offset : {5.0, 14.0})
     ExpectPoleStopsCar("frictionless", offset, [](Scenario* s) {
       for (BodySpec& b : s->bodies) b.friction = 0.0;
-    });
+    }, LowerBar::kHeldOrStillPushing);
 }
 
 // Centred and frictionless, the pole ploughs deep into the car, which has not come to rest at the

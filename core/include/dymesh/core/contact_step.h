@@ -192,9 +192,9 @@ class ContactEngine {
   // the band (held in the next step)
   bool LimitFriction(double dt, double magnitude, const std::array<RigidState, 2>& trial, PairLoads* pair) const;
   // spec §6 (contact_turn.cpp): in the step in which the approach at a touching node ends, its loading
-  // force acts over the part of the step before the turn, its turn force after it (each point's
-  // before_turn, from the pair's trial motion with and without those loads); a rigid body's nodes,
-  // pushing only while the faces' crush grows, likewise as a whole
+  // force acts over the part of the step before the turn, its turn force throughout (each point's
+  // before_turn, from its normal velocity at the step's start and on the pair's trial motion under
+  // every load); a rigid body's nodes, pushing only while the faces' crush grows, likewise as a whole
   void EndApproachWithinStep(std::vector<PassSums>* sums, const std::vector<double>& weights,
                              const PassSums& rigid_nodes, double dt, PairLoads* pair) const;
   // a pair's two bodies' velocities and spins on a trial motion, earth frame of the step's start
