@@ -18,7 +18,8 @@ namespace {
 
 namespace u = dymesh::units;
 
-// the barrier box (spec §4 test case) at `speed_mph` with restitution e, the turn within the step on
+// the barrier box (spec §4 test case) at `speed_mph` with restitution e, the turn within the step on (the
+// default since the 58th session)
 Scenario TurningBarrier(double speed_mph, double e, double time_step) {
   Scenario s = testing::BarrierScenario(speed_mph, e, time_step);
   s.contact.turn_within_step = true;
