@@ -123,12 +123,12 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
   // spec §2 Location with the rigid body's nodes as slaves: a node that crossed a face while closing on
   // it (at least kLeastCrossingSpeed; no deeper than a step's motion plus TOOFAR_MARGIN: a face found
   // deeper was passed before, an inner layer of a display mesh), on the half of a face nearer its free
-  // corners (barycentric weight at least 1/2). A corner is held where the deformable body's own node meets the rigid
-  // surface: touching it, or having found it closing on it or lies behind it; its own contact carries
-  // the load round it (pushing the free corners to clear a node near a held one crushed the p406 786
-  // in on the round pole). A face with held and free corners is still pushed where it spans beyond
-  // the held ones: a node column on a post's edge slid off it and the post went through the faces
-  // between that column and the next (delta-V 0.18 of 10 mph with the post 0.001 in off the column)
+  // corners (barycentric weight at least 1/2). A corner is held where the deformable body's own node
+  // meets the rigid surface: touching it, or having found it closing on it or lies behind it; its own
+  // contact carries the load round it (pushing the free corners to clear a node near a held one crushed
+  // the p406 786 in on the round pole). A face with held and free corners is still pushed where it spans
+  // beyond the held ones: a node column on a post's edge slid off it and the post went through the
+  // faces between that column and the next (delta-V 0.18 of 10 mph with the post 0.001 in off the column)
   auto free_corner = [&](int v) {
     return !std::binary_search(engaged.touching.begin(), engaged.touching.end(), v) &&
            !std::binary_search(engaged.located.begin(), engaged.located.end(), v);
@@ -139,7 +139,8 @@ ContactEngine::PassSums ContactEngine::PushFacesOffRigidNodes(int rigid, int def
     for (std::size_t i = begin; i < end; ++i) {
       Located hit;
       if (!LocateNode(f, candidates[i], false, nullptr, &chunks_[chunk].scratch, &hit)) continue;
-      if (hit.depth <= options_.contact_tolerance || -hit.rel_velocity.dot(hit.normal) < kLeastCrossingSpeed) continue;
+      const double closing = -hit.rel_velocity.dot(hit.normal);
+      if (hit.depth <= options_.contact_tolerance || closing < kLeastCrossingSpeed) continue;
       if (hit.depth > hit.TooFar(dt, options_.toofar_margin)) continue;
       const auto& tri = m.mesh.triangles[hit.triangle];
       Crossing c{candidates[i], hit.triangle, hit.depth, f.ToMaster(f.slave->vertices[candidates[i]]), hit.normal};

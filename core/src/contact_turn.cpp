@@ -8,12 +8,12 @@
 namespace dymesh {
 namespace {
 
-// the part of a step before a turn: the normal velocity (> 0 separating) at the step's start and at
-// its end with every load, linear over the step
-double BeforeTurn(double at_start, double at_end) {
-  if (at_start >= 0.0) return 0.0;  // parting from the step's start: the approach ended before it
-  if (at_end <= 0.0) return 1.0;    // still closing at the step's end: loading throughout
-  return at_start / (at_start - at_end);
+// the part of a step in which a point closes: its normal velocity (> 0 separating) at the step's start
+// and at its end with every load, linear over the step (closing first, the part before the turn)
+double ClosingPart(double at_start, double at_end) {
+  if (at_start < 0.0 && at_end <= 0.0) return 1.0;   // closing throughout
+  if (at_start >= 0.0 && at_end >= 0.0) return 0.0;  // parting throughout: the approach ended before
+  return at_start < 0.0 ? at_start / (at_start - at_end) : at_end / (at_end - at_start);
 }
 
 }  // namespace
@@ -43,7 +43,7 @@ void ContactEngine::EndApproachWithinStep(std::vector<PassSums>* sums, const std
   rigid_nodes.normal.AddToPair(1.0, rigid_slave, rigid.normal_force, rigid.normal_moment);
   rigid_nodes.normal.AddToPair(-1.0, rigid_slave, rest.normal_force, rest.normal_moment);
   // each point's normal velocity at the step's start and at its end on the host's step with every load:
-  // the loading part acts until the approach there ends (held whole over the step, a flat face's
+  // the loading part acts while the point closes, until the approach there ends (held whole over the step, a flat face's
   // constant A turned a parking-lot approach round: a 3000 lb box into a wall at 0.5 mph with e = 0 left
   // at 0.16 of its speed, at 0.1 mph at 0.93). Read from the step's end velocities with and without the
   // loading parts instead (the loading impulse capped to stop the approach at the step's end), a point
@@ -57,14 +57,14 @@ void ContactEngine::EndApproachWithinStep(std::vector<PassSums>* sums, const std
     const int ks = pass.slave == p->body[0] ? 0 : 1;
     for (ContactPoint& q : pass.points) {
       if (!(q.force > q.turn_force)) continue;
-      q.before_turn = BeforeTurn(RelativeVelocityAt(rates_start, ks, q).dot(q.normal),
-                                 RelativeVelocityAt(rates_end, ks, q).dot(q.normal));
+      q.before_turn = ClosingPart(RelativeVelocityAt(rates_start, ks, q).dot(q.normal),
+                                  RelativeVelocityAt(rates_end, ks, q).dot(q.normal));
       turned = turned || q.before_turn < 1.0;
     }
   }
   // the rigid nodes' pushes as a whole, by their power on the motion they oppose
-  const double rigid_turn = BeforeTurn(PairPower(*p, rigid.normal_force, rigid.normal_moment, start),
-                                       PairPower(*p, rigid.normal_force, rigid.normal_moment, end));
+  const double rigid_turn = ClosingPart(PairPower(*p, rigid.normal_force, rigid.normal_moment, start),
+                                        PairPower(*p, rigid.normal_force, rigid.normal_moment, end));
   if (!turned && rigid_turn >= 1.0) return;
   // the step's normal loads: each point's force over the step, the rigid nodes' share
   add_loading(1.0, true, &rest);

@@ -96,9 +96,10 @@ TEST(RoundPole, StopsTheCarForEverySearchStopRulePassCountStepMeshOrderAndFrame)
   // leaves 18.35-20.17 mph, six of them 0.2-1.8 % under the bar (18.38-20.93, six, before the friction
   // read the slide at the step's end); printed, held to the upper bar and the balance only
   for (const auto& [label, vary] : variants) {
-    for (double offset : {5.0, 14.0})
-      ExpectPoleStopsCar(label, offset, vary,
-                         label == std::string("polygon normal") && offset == 14.0 ? LowerBar::kPrinted : LowerBar::kHeld);
+    for (double offset : {5.0, 14.0}) {
+      const bool printed = label == std::string("polygon normal") && offset == 14.0;
+      ExpectPoleStopsCar(label, offset, vary, printed ? LowerBar::kPrinted : LowerBar::kHeld);
+    }
   }
 }
 
@@ -108,7 +109,7 @@ TEST(RoundPole, StopsTheCarForEverySearchStopRulePassCountStepMeshOrderAndFrame)
 // lower bar's premise, friction holding the contact point, is gone: the car's front wraps round the
 // pole and slides along it, a chaotic case (README, Known limits: shifting the pole 0.01 in at a time
 // moved delta-V 19.4-29.0 mph at 5 in off without the turn within the step, 18.6-28.1 with it, the
-// runs under the bar still pushing at the demo's 0.7 s). So under the bar the run must say it has not
+// four runs of eleven under the bar still pushing at the demo's 0.7 s). So under the bar the run must say it has not
 // finished (`ended_in_contact`). (How deep the pole goes before it stops is a known limit: README)
 TEST(RoundPole, FrictionlessPoleStopsTheCar) {
   for (double offset : {5.0, 14.0})
@@ -344,8 +345,8 @@ TEST(RoundPole, BoxCrushFollowsTheColumnClosedForm) {
 
 // A box stopped against the pole with e = 0 (3 in cells, 1.5 in off its axis) slides on past it,
 // turning, with a touch of under 1e-4 of its peak contact force to the run's end (the two bodies'
-// loads summed: measured 0.007 of 40,000 lbf): `complete`, warned `light_contact_at_end` (kLightContactShare). The same run cut at its
-// peak force ends pushing: `ended_in_contact`
+// loads summed: measured 0.007 of 40,000 lbf): `complete`, warned `light_contact_at_end`
+// (kLightContactShare). The same run cut at its peak force ends pushing: `ended_in_contact`
 TEST(RoundPole, TouchAfterTheStopIsALightContact) {
   BoxPole c{3, 10.0, 1.5};
   c.duration = 0.3;

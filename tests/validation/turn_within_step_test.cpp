@@ -98,7 +98,8 @@ TEST(TurnWithinStep, CoarseStepKeepsDeltaV) {
 // a 180 x 66 x 30 in, 3000 lb box at 30 mph, 45 deg off the normal of a frictionless rigid wall, e 0.3
 Scenario BoxAt45Degrees(double time_step) {
   char json[1600];
-  std::snprintf(json, sizeof json, R"({"units": "US", "time": {"step": %g, "duration": 0.6, "stop_at_separation": false},
+  std::snprintf(json, sizeof json, R"({"units": "US",
+    "time": {"step": %g, "duration": 0.6, "stop_at_separation": false},
     "bodies": [{"name": "box", "mesh": {"box": {"length": 180, "width": 66, "height": 30, "segments": [18, 7, 3]}},
       "weight": 3000, "restitution": 0.3, "friction": 0, "motion": "planar",
       "stiffness": {"default": {"A": 300, "B": 100, "conversion_height": 30}},
