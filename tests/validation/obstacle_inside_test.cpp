@@ -193,9 +193,9 @@ TEST(ObstacleInside, PoleTheBoxCrushedAroundIsNotMarked) {
 // (the cube's width: the crush the cube itself could have made). The bar is the search's reach, as for
 // the pole above. At 80 mph turned 10 deg the cube goes through the box's faces and leaves by its side;
 // at 20 mph it stops 10 in into the box and bounces back (e 0.10 of 0.1). (At 80 mph unturned, the
-// crater's nodes slide off the cube's faces and it drifts on inside the box after the pulse at 0.2-2.4
-// mph: marked, 27 in past the crush by the end, since the turn within the step; 50-70 mph, turned 30
-// deg, likewise, with or without that stage: Known limits)
+// crater's nodes slide off the cube's faces and it drifts on inside the box after the pulse, at 0.2-0.5
+// mph: unmarked; with a first law of the turn within the step at 2.4 mph, 27 in past the crush by the
+// end, marked; at 50-70 mph, or turned 30 deg, it is marked: Known limits)
 struct CubeRun {
   double inside_beyond_crush = -INFINITY;  // [in]
   bool inside = false, voided = false;

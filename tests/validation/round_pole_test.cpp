@@ -109,8 +109,9 @@ TEST(RoundPole, StopsTheCarForEverySearchStopRulePassCountStepMeshOrderAndFrame)
 // lower bar's premise, friction holding the contact point, is gone: the car's front wraps round the
 // pole and slides along it, a chaotic case (README, Known limits: shifting the pole 0.01 in at a time
 // moved delta-V 19.4-29.0 mph at 5 in off without the turn within the step, 18.6-28.1 with it, the
-// four runs of eleven under the bar still pushing at the demo's 0.7 s). So under the bar the run must say it has not
-// finished (`ended_in_contact`). (How deep the pole goes before it stops is a known limit: README)
+// four runs of eleven under the bar still pushing at the demo's 0.7 s). So under the bar the run must
+// say it has not finished (`ended_in_contact`). (How deep the pole goes before it stops is a known
+// limit: README)
 TEST(RoundPole, FrictionlessPoleStopsTheCar) {
   for (double offset : {5.0, 14.0})
     ExpectPoleStopsCar("frictionless", offset, [](Scenario* s) {
