@@ -217,7 +217,6 @@ CubeRun RunCubeIntoBox(double heading, double speed) {
                 speed, heading);
   const AssessedRun ran = RunAndAssess(json, "cube_into_box.json");
   const Simulation& sim = *ran.sim;
-  const Summary& summary = ran.summary;
   const RunAssessment& assessment = ran.assessment;
   CubeRun r;
   // the box's deepest crush by the end among its rest nodes within 10 in of a point across the line

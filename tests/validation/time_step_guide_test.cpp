@@ -14,6 +14,7 @@
 #include "dymesh/analysis/run_assessment.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/core/time_step_guide.h"
+#include "run_to_end.h"
 #include "test_scenarios.h"
 
 namespace dymesh {
@@ -63,12 +64,7 @@ TEST(TimeStepGuide, SimulatedLoadingLastsAQuarterOfTheSpringPeriod) {
 }
 
 // the spec §4 box into the barrier at `step`
-Summary BarrierRun(double step) {
-  const Scenario s = testing::BarrierScenario(30.0, 0.1, step);
-  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
-  sim.Run();
-  return Summarize(sim);
-}
+Summary BarrierRun(double step) { return testing::RunToEnd(testing::BarrierScenario(30.0, 0.1, step)); }
 
 TEST(TimeStepGuide, RecommendedStepResolvesDeltaVToOnePercentAndCoarseStepsAreWarned) {
   const Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);

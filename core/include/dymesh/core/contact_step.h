@@ -118,15 +118,16 @@ class ContactEngine {
   };
   // a touching slave node: the point both bodies are loaded at, the master's outward normal there
   // (earth frame), its normal force, the force it keeps once the approach ends (its turn force), and
-  // the part of the step it loaded for (EndApproachWithinStep); friction acts at it (spec §7)
+  // the part of the step it closes, over which the rest loads (EndApproachWithinStep); friction acts
+  // at it (spec §7)
   struct ContactPoint {
     Vec3 arm_slave, arm_master;  // [m] from each body's CG
     Vec3 normal;
     double force = 0.0;       // [N]
     double turn_force = 0.0;  // [N]
-    double before_turn = 1.0;
+    double closing_part = 1.0;
     // [N] over the step
-    double Carried() const { return before_turn < 1.0 ? turn_force + before_turn * (force - turn_force) : force; }
+    double Carried() const { return closing_part < 1.0 ? turn_force + closing_part * (force - turn_force) : force; }
   };
   // one pass's sums: normal loads of its slave's nodes, and the points they act at
   struct PassSums {
@@ -192,8 +193,8 @@ class ContactEngine {
   // the band (held in the next step)
   bool LimitFriction(double dt, double magnitude, const std::array<RigidState, 2>& trial, PairLoads* pair) const;
   // spec §6 (contact_turn.cpp): in the step in which the approach at a touching node ends, its loading
-  // force acts over the part of the step before the turn, its turn force throughout (each point's
-  // before_turn, from its normal velocity at the step's start and on the pair's trial motion under
+  // force acts over the part of the step it closes, its turn force throughout (each point's
+  // closing_part, from its normal velocity at the step's start and on the pair's trial motion under
   // every load); a rigid body's nodes, pushing only while the faces' crush grows, likewise as a whole
   void EndApproachWithinStep(std::vector<PassSums>* sums, const std::vector<double>& weights,
                              const PassSums& rigid_nodes, double dt, PairLoads* pair) const;
