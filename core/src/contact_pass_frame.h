@@ -58,12 +58,12 @@ struct ContactEngine::PassFrame {
 };
 
 // a slave node matched to a master triangle (master frame): the search direction found the
-// triangle; the penetration, the pushback and the contact force are along its outward normal
+// triangle; the penetration is across it, the pushback and the contact force along `normal`
 struct ContactEngine::Located {
   int triangle = -1;
   double ray_depth = 0.0;    // [m] distance to the surface along the search ray (selects the triangle)
   double depth = 0.0;        // [m] penetration along the triangle's normal (> 0 inside the master)
-  Vec3 normal{0, 0, 0};      // master's outward normal of the triangle, unit, master frame
+  Vec3 normal{0, 0, 0};      // the triangle's outward normal (or its rest one: ConformingNormal), unit, master frame
   Vec3 rel_velocity{0, 0, 0};  // [m/s] slave node relative to master, master frame
 
   // spec §2 TOOFAR: the farthest a step restores, the relative motion of a step plus the margin [m]

@@ -359,7 +359,7 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
             {"passes_per_step", "search_direction", "specified_direction", "stop_rule", "version", "null_band",
              "pushback_reduction", "pushback_reduce_limit", "toofar_margin", "toofar_maximum", "search_backoff",
              "unload_begin", "unload_pot", "unload_stop", "max_grow_unload", "friction_null_band", "rebound_law",
-             "calc_nabor_interval", "contact_tolerance", "global_search_box", "turn_within_step"});
+             "calc_nabor_interval", "contact_tolerance", "global_search_box", "turn_within_step", "contact_normal"});
   const double length = src.units.length;
   // integers and choices
   if (const Json* v = Find(j, "passes_per_step"))
@@ -383,6 +383,10 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
                                             {{"scaled", ReboundLaw::kScaled}, {"literal", ReboundLaw::kLiteral}});
   if (const Json* v = Find(j, "turn_within_step"))
     o->turn_within_step = ReadBool(src, *v, Join(path, "turn_within_step"));
+  if (const Json* v = Find(j, "contact_normal"))
+    o->contact_normal = ReadChoice<ContactNormal>(src, *v, Join(path, "contact_normal"),
+                                                  {{"crushed", ContactNormal::kCrushed},
+                                                   {"conforming", ContactNormal::kConforming}});
   if (const Json* v = Find(j, "calc_nabor_interval"))
     o->calc_nabor_interval =
         ReadInt(src, *v, Join(path, "calc_nabor_interval"), 1, 1000000, "expected an integer >= 1");

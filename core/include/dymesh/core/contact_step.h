@@ -220,6 +220,9 @@ class ContactEngine {
   bool ExamineTriangle(const PassFrame& f, const Candidate& candidate, const Vec3& p, const Vec3& ray_dir,
                        const Vec3& facing, int faces_of, const Vec3& previous, const Vec3& parting,
                        bool poly_normal, const Located* best, Located* out) const;
+  // contact.contact_normal conforming: of master triangle t's crushed normal and its rest normal (both
+  // master frame), the one that meets deformable slave node v's own faces more squarely
+  Vec3 ConformingNormal(const PassFrame& f, int v, int t, const Vec3& crushed) const;
   // of deformable pair (a, b), whatever their order: the slave of an odd last pass on even steps, whose
   // passes are also combined first
   int LeadSlave(int a, int b) const;

@@ -20,6 +20,12 @@ enum class ReboundLaw {
   kLiteral,  ///< F = cubic(delta_r) as the spec's text reads; equal to kScaled for a pure linear B law
 };
 
+/// Which normal of a deformable master's face a deformable slave node is pushed and loaded along.
+enum class ContactNormal {
+  kCrushed,     ///< the face as crushed (default)
+  kConforming,  ///< the crushed face's or its rest face's, whichever meets the node's own faces more squarely
+};
+
 /// Every option of the contact step, SI units.
 struct ContactOptions {
   int passes_per_step = 2;                                   ///< master/slave swaps per step (spec §1)
@@ -40,6 +46,7 @@ struct ContactOptions {
   double friction_null_band = 1.0 * units::kInch;            ///< [m/s] FRICTION_NULL_BAND (spec §7)
   ReboundLaw rebound_law = ReboundLaw::kScaled;
   bool turn_within_step = true;  ///< spec §6: loading force ends where the approach does (README)
+  ContactNormal contact_normal = ContactNormal::kCrushed;  ///< between deformable bodies (README)
   Eigen::Vector3d specified_direction{-1.0, 0.0, 0.0};       ///< pushback direction in the slave body frame (kSpecified)
   int calc_nabor_interval = 5;                               ///< CALC_NABOR_INTERVAL (neighbour-box locator)
   double global_search_box = 0.0;                            ///< [m] GLOBAL_SEARCH_BOX half-size; 0 = SetBoxSize (automatic)
