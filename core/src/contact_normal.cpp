@@ -1,6 +1,8 @@
 // Which normal of a deformable master's face a deformable slave node is pushed and loaded along
-// (contact.contact_normal; README, the choices table).
+// (contact.contact_normal; spec §2 leaves the push to the search method, §5 asks for equal and opposite
+// forces: README, the choices table).
 #include "dymesh/core/contact_step.h"
+#include "dymesh/core/geometry.h"
 #include "contact_pass_frame.h"
 
 namespace dymesh {
@@ -11,27 +13,24 @@ constexpr double kFacesSquarely = 0.5;
 // a rest normal the crush turned over 78 degrees away is not taken (the face is folded over)
 constexpr double kLeastRestAgreement = 0.2;
 
-// the unit outward normal of rest triangle t of `mesh` (cross product of its edges)
-Vec3 RestNormal(const TriMesh& mesh, int t) {
+// the outward area vector of triangle t of `mesh` (twice its area along its normal)
+Vec3 AreaVector(const TriMesh& mesh, int t) {
   const auto& tri = mesh.triangles[t];
-  const Vec3& a = mesh.vertices[tri[0]];
-  return (mesh.vertices[tri[1]] - a).cross(mesh.vertices[tri[2]] - a).normalized();
+  return TriangleCross(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
 }
 
 }  // namespace
 
 Vec3 ContactEngine::ConformingNormal(const PassFrame& f, int v, int t, const Vec3& crushed) const {
   // the master face's rest normal, turned with the master (its frame is the master's)
-  const Vec3 rest = RestNormal(f.master_model->mesh, t);
+  const Vec3 rest = AreaVector(f.master_model->mesh, t).normalized();
   if (!(rest.dot(crushed) > kLeastRestAgreement)) return crushed;
   // the node's own rest faces that face the master's rest face, area-weighted (master frame): at the
   // edge of a contact the node's side faces are left out (they face across it)
   const BodyModel& slave = *f.slave_model;
   Vec3 own = Vec3::Zero();
   for (int i = slave.vertex_triangles.offsets[v]; i < slave.vertex_triangles.offsets[v + 1]; ++i) {
-    const auto& tri = slave.mesh.triangles[slave.vertex_triangles.ids[i]];
-    const Vec3& a = slave.mesh.vertices[tri[0]];
-    const Vec3 area = f.r_slave_to_master * (slave.mesh.vertices[tri[1]] - a).cross(slave.mesh.vertices[tri[2]] - a);
+    const Vec3 area = f.r_slave_to_master * AreaVector(slave.mesh, slave.vertex_triangles.ids[i]);
     if (area.normalized().dot(rest) < -kFacesSquarely) own += area;
   }
   if (own.squaredNorm() == 0.0) return crushed;
