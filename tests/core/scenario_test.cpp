@@ -36,7 +36,7 @@ constexpr const char* kGoodScenario = R"({
   "contact": {"passes_per_step": 3, "search_direction": "specified", "specified_direction": [0, 3, 4],
               "stop_rule": "best_of_two", "version": 4, "null_band": 0.25, "toofar_maximum": 8,
               "pushback_reduction": 0.25, "friction_null_band": 2, "rebound_law": "literal",
-              "calc_nabor_interval": 7, "turn_within_step": false, "contact_normal": "conforming"},
+              "calc_nabor_interval": 7, "turn_within_step": false, "contact_normal": "crushed"},
   "bodies": [
     {"name": "car",
      "mesh": {"file": "meshes/car.obj", "unit": "mm", "scale": 2, "axes": ["x", "z", "-y"], "subdivisions": 1},
@@ -131,7 +131,7 @@ TEST_F(ScenarioFiles, GoodUsScenarioConverts) {
   EXPECT_EQ(c.rebound_law, ReboundLaw::kLiteral);
   EXPECT_EQ(c.calc_nabor_interval, 7);
   EXPECT_FALSE(c.turn_within_step);  // the default is true: the key was read
-  EXPECT_EQ(c.contact_normal, ContactNormal::kConforming);  // the default is crushed
+  EXPECT_EQ(c.contact_normal, ContactNormal::kCrushed);  // the default is conforming
 
   // body 0: mesh source, mass properties
   const BodySpec& car = s.bodies[0];

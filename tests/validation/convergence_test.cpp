@@ -30,8 +30,28 @@ struct Outcome {
   double balance = 0.0;
   std::vector<double> yaw_rate;  // [rad/s] after the contact, same order
   double contact_end = -1.0;     // [s]
+  double collision_end = -1.0;   // [s] the last contact force before kSlapHorizon without one (or the run's end)
+  double next_meeting = -1.0;    // [s] the first contact force after that, -1 when none
   RunStatus status = RunStatus::kComplete;
 };
+
+// the collision's end: the last recorded contact force (either body) before a stretch of kSlapHorizon
+// without one, or before the run's end; and the next force after that stretch (a new meeting: the
+// stop at separation calls one that late a secondary impact) [s]
+void NoteCollisionEnd(const Simulation& sim, Outcome* o) {
+  double last_force = -1.0;
+  for (const Sample& sample : sim.history()) {
+    bool force = false;
+    for (const BodySample& b : sample.bodies) force = force || b.loads.force_earth.squaredNorm() > 0.0;
+    if (!force) continue;
+    if (last_force >= 0.0 && sample.time - last_force > kSlapHorizon) {
+      o->next_meeting = sample.time;
+      break;
+    }
+    last_force = sample.time;
+  }
+  o->collision_end = last_force;
+}
 
 // the run; `swap` reverses the body order (results are mapped back to the base order)
 Outcome Run(Scenario s, bool swap, std::vector<std::shared_ptr<const BodyModel>> models = {}) {
@@ -50,6 +70,7 @@ Outcome Run(Scenario s, bool swap, std::vector<std::shared_ptr<const BodyModel>>
   if (swap) std::swap(o.body_crush[0], o.body_crush[1]);
   if (swap) std::swap(o.yaw_rate[0], o.yaw_rate[1]);
   o.contact_end = sum.contact_end;
+  NoteCollisionEnd(sim, &o);
   o.status = sum.status;
   o.crush = sum.crush_energy;
   o.friction = sum.friction_energy;
@@ -116,11 +137,21 @@ void ExpectClose(const Outcome& base, const Outcome& v, const std::string& label
               RunStatusName(v.status));
 }
 
-// issue 8 item 6, contact that ends: the run parts (status complete) before `parted_by` [s]
+// issue 8 item 6, contact that ends: the collision parts before `parted_by` [s], and the run is
+// complete or ended in a new meeting (a secondary impact: contact again after kSlapHorizon without).
+// The oblique demo's cars meet again at 0.79-0.95 s at every variant and with either contact normal
+// when run on (the stock car spinning at 120 deg/s, 3.3-3.5 klbf): with the p406 meshed 1:4 and the
+// conforming normal that meeting falls inside the demo's 0.8 s, after its collision ended at 0.47 s
+// (a 340 lbf touch 0.12 s after the pulse, within the slap horizon, ends it)
 void ExpectParted(const Outcome& o, double parted_by, const std::string& label) {
-  EXPECT_EQ(o.status, RunStatus::kComplete) << label;
-  EXPECT_GT(o.contact_end, 0.0) << label;
-  EXPECT_LT(o.contact_end, parted_by) << label;
+  EXPECT_GT(o.collision_end, 0.0) << label;
+  EXPECT_LT(o.collision_end, parted_by) << label;
+  if (o.status != RunStatus::kComplete) {
+    EXPECT_EQ(o.status, RunStatus::kEndedInContact) << label;
+    EXPECT_GT(o.next_meeting, o.collision_end + kSlapHorizon) << label;
+  }
+  std::printf("[measured] %s: the collision ends at %.4f s, next meeting %.4f s, status %s\n", label.c_str(),
+              o.collision_end, o.next_meeting, RunStatusName(o.status));
 }
 
 // each variant against the base; with `parted_by` > 0 every one must also part before it

@@ -26,9 +26,12 @@ inline constexpr double kEnergyCreatedTolerance = 0.01;
 /// their speed, the contact failed to stop them (coarse car meshes head-on: -0.56 to -0.97 of 60 mph).
 inline constexpr double kPassThroughSeparation = -0.5;
 /// The same with a body ended inside the other (obstacle_inside, the independent sign that it went
-/// in): past the most negative fraction a stopped collision ends at (-0.20), with a margin (a box spun
-/// 48 deg about a post 25 in off its axis ends at -0.08 with the post inside its turned side)
-inline constexpr double kPassThroughWithObstacleInside = -0.25;
+/// in): past the most negative fraction any stopped collision ends at (-0.20, a display-mesh demo,
+/// which obstacle_inside does not judge); stopped with a body inside, -0.15 at worst (boxes into
+/// posts at 20 mph keeping 17.1 of 20 mph with the post inside; a box spun 48 deg about a post 25 in
+/// off its axis ends at -0.08). A 10 in cube through a box's faces and out its side ends at -0.23
+/// (-0.25 until the 60th session's margin: README, obstacle_inside)
+inline constexpr double kPassThroughWithObstacleInside = -0.20;
 
 /// Whether a run warning says a complete run's delta-V, crush and energies are not physical
 /// (passed_through, crush_beyond_length, energy_balance, energy_created): an ensemble counts such a sample as failed

@@ -22,8 +22,8 @@ enum class ReboundLaw {
 
 /// Which normal of a deformable master's face a deformable slave node is pushed and loaded along.
 enum class ContactNormal {
-  kCrushed,     ///< the face as crushed (default)
-  kConforming,  ///< the crushed face's or its rest face's, whichever meets the node's own faces more squarely
+  kCrushed,     ///< the face as crushed (the default until the 60th session)
+  kConforming,  ///< the crushed face's or its rest face's, whichever meets the node's own faces more squarely (default)
 };
 
 /// Every option of the contact step, SI units.
@@ -46,7 +46,7 @@ struct ContactOptions {
   double friction_null_band = 1.0 * units::kInch;            ///< [m/s] FRICTION_NULL_BAND (spec §7)
   ReboundLaw rebound_law = ReboundLaw::kScaled;
   bool turn_within_step = true;  ///< spec §6: loading force ends where the approach does (README)
-  ContactNormal contact_normal = ContactNormal::kCrushed;  ///< between deformable bodies (README)
+  ContactNormal contact_normal = ContactNormal::kConforming;  ///< between deformable bodies (README)
   Eigen::Vector3d specified_direction{-1.0, 0.0, 0.0};       ///< pushback direction in the slave body frame (kSpecified)
   int calc_nabor_interval = 5;                               ///< CALC_NABOR_INTERVAL (neighbour-box locator)
   double global_search_box = 0.0;                            ///< [m] GLOBAL_SEARCH_BOX half-size; 0 = SetBoxSize (automatic)
