@@ -106,14 +106,14 @@ size_t Bytes(const std::vector<T>& v) { return v.capacity() * sizeof(T); }
 
 BodyMemory MeasureBodyMemory(const BodyModel& model) {
   BodyMemory m;
-  // model: rest mesh, CSR adjacency, surfaces
+  // model: rest mesh, CSR adjacency, surfaces, rest area vectors
   m.model = Bytes(model.mesh.vertices) + Bytes(model.mesh.triangles) + Bytes(model.vertex_triangles.offsets) +
-            Bytes(model.vertex_triangles.ids) + Bytes(model.surface);
+            Bytes(model.vertex_triangles.ids) + Bytes(model.surface) + Bytes(model.rest_area);
   // state: every per-vertex and per-triangle array
   const BodyState s = MakeBodyState(model, RigidState{});
   m.state = Bytes(s.vertices) + Bytes(s.delta) + Bytes(s.delta_max) + Bytes(s.unload) + Bytes(s.node_force) +
             Bytes(s.node_area) + Bytes(s.update_step) + Bytes(s.step_start_deflection) + Bytes(s.vertex_normal) +
-            Bytes(s.normal_stale) + Bytes(s.tri_normal) + Bytes(s.tri_area) + Bytes(s.tri_area_orig) + Bytes(s.contact_normal) +
+            Bytes(s.normal_stale) + Bytes(s.tri_normal) + Bytes(s.tri_area) + Bytes(s.contact_normal) +
             model.mesh.vertices.size() * sizeof(Vec3);  // the engine's pending crush of a simultaneous pass pair
   // Embree: scene, BVH and buffers allocated through a monitored device, plus the locator's own copies
   std::atomic<long long> embree_bytes{0};

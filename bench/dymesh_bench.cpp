@@ -127,15 +127,15 @@ void BM_LocateCgal(benchmark::State& state) {
 }
 #endif
 
-void BM_Step(benchmark::State& state) {
-  // car-to-car contact: both passes, forces, sums, refit; the slave driven in at constant speed
+// car-to-car contact: both passes, forces, sums, refit; the slave driven in at constant speed
+void TimeSteps(benchmark::State& state, const ContactOptions& options) {
   const Rung rung = kStepCars[state.range(0)];
   const int threads = static_cast<int>(state.range(1));
   TriMesh mesh = LoadDataMesh(rung.file, rung.subdivisions);
   const ContactSetup setup = PlaceInContact(mesh, mesh, kPenetration, kSpeed);
   StepTiming timing;
   for (auto _ : state) {
-    timing = MeasureSteps(setup, threads, 2, 8);
+    timing = MeasureSteps(setup, threads, 2, 8, options);
     state.SetIterationTime(timing.step_seconds);
   }
   state.counters["triangles_per_car"] = static_cast<double>(setup.master->mesh.triangles.size());
@@ -143,6 +143,16 @@ void BM_Step(benchmark::State& state) {
   state.counters["segments_per_step"] = static_cast<double>(timing.segments);
   state.counters["raycast_ms"] = 1e3 * timing.raycast_seconds;
   state.counters["step_vs_raycast"] = timing.step_seconds / timing.raycast_seconds;
+}
+
+void BM_Step(benchmark::State& state) { TimeSteps(state, ContactOptions{}); }
+
+// the same steps with the crushed contact normal (the default until the 60th session): the baseline
+// of the conforming normal's cost, in the same run
+void BM_StepCrushedNormal(benchmark::State& state) {
+  ContactOptions options;
+  options.contact_normal = ContactNormal::kCrushed;
+  TimeSteps(state, options);
 }
 
 void BM_RefitVersusRebuild(benchmark::State& state) {
@@ -194,6 +204,7 @@ BENCHMARK(BM_LocateBruteForce)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LocateCgal)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
 #endif
 BENCHMARK(BM_Step)->ArgsProduct({{0, 1, 2}, {1, 2}})->Iterations(1)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_StepCrushedNormal)->ArgsProduct({{2}, {1, 2}})->Iterations(1)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_RefitVersusRebuild)->ArgsProduct({{1, 3, 5}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Memory)->DenseRange(0, 5)->Iterations(1)->Unit(benchmark::kMillisecond);
 

@@ -70,7 +70,7 @@ class RecordingLocator final : public Locator {
 
 }  // namespace
 
-StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int steps) {
+StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int steps, const ContactOptions& options) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   auto device = std::make_shared<const accel::EmbreeDevice>();
   std::vector<RecordingLocator*> recorders;
@@ -79,7 +79,7 @@ StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int 
     recorders.push_back(locator.get());
     return locator;
   };
-  ContactEngine engine({setup.master, setup.slave}, {setup.master_pose, setup.slave_pose}, ContactOptions{}, factory);
+  ContactEngine engine({setup.master, setup.slave}, {setup.master_pose, setup.slave_pose}, options, factory);
   // one collision step, then the slave closes by its speed (no dynamics: a steady pulse)
   RigidState slave = setup.slave_pose;
   auto step = [&] {

@@ -13,6 +13,7 @@ struct StepTiming {
 
 /// Runs `warmup` steps into contact, times `steps` more with `threads` worker threads, then replays
 /// one further step's segments as raw rays. The slave keeps closing at its set-up speed.
-StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int steps);
+StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int steps,
+                        const ContactOptions& options = {});
 
 }  // namespace dymesh::bench

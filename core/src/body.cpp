@@ -50,6 +50,11 @@ BodyModel MakeBodyModel(std::string name, TriMesh mesh, const std::array<Stiffne
   m.friction = friction;
   m.rigid = rigid;
   m.median_edge = MedianEdgeLength(m.mesh);
+  // rest area vectors (the conforming contact normal reads them for every located node)
+  m.rest_area.reserve(m.mesh.triangles.size());
+  for (const auto& tri : m.mesh.triangles)
+    m.rest_area.push_back(
+        TriangleCross(m.mesh.vertices[tri[0]], m.mesh.vertices[tri[1]], m.mesh.vertices[tri[2]]).cast<float>());
   // surface class of each vertex from its rest outward normal (DefineVertStiffness)
   const BodyState rest = MakeBodyState(m, RigidState{});
   m.surface.resize(m.mesh.vertices.size());
@@ -80,7 +85,6 @@ BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid) {
   std::vector<int> all(nv);
   for (size_t v = 0; v < nv; ++v) all[v] = static_cast<int>(v);
   UpdateTriangles(model, all, &s);
-  s.tri_area_orig = s.tri_area;
   return s;
 }
 

@@ -13,24 +13,20 @@ constexpr double kFacesSquarely = 0.5;
 // a rest normal the crush turned over 78 degrees away is not taken (the face is folded over)
 constexpr double kLeastRestAgreement = 0.2;
 
-// the outward area vector of triangle t of `mesh` (twice its area along its normal)
-Vec3 AreaVector(const TriMesh& mesh, int t) {
-  const auto& tri = mesh.triangles[t];
-  return TriangleCross(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
-}
-
 }  // namespace
 
 Vec3 ContactEngine::ConformingNormal(const PassFrame& f, int v, int t, const Vec3& crushed) const {
   // the master face's rest normal, turned with the master (its frame is the master's)
-  const Vec3 rest = AreaVector(f.master_model->mesh, t).normalized();
+  const auto& face = f.master_model->mesh.triangles[t];
+  const auto& at = f.master_model->mesh.vertices;
+  const Vec3 rest = TriangleCross(at[face[0]], at[face[1]], at[face[2]]).normalized();
   if (!(rest.dot(crushed) > kLeastRestAgreement)) return crushed;
   // the node's own rest faces that face the master's rest face, area-weighted (master frame): at the
   // edge of a contact the node's side faces are left out (they face across it)
   const BodyModel& slave = *f.slave_model;
   Vec3 own = Vec3::Zero();
   for (int i = slave.vertex_triangles.offsets[v]; i < slave.vertex_triangles.offsets[v + 1]; ++i) {
-    const Vec3 area = f.r_slave_to_master * AreaVector(slave.mesh, slave.vertex_triangles.ids[i]);
+    const Vec3 area = f.r_slave_to_master * slave.rest_area[slave.vertex_triangles.ids[i]].cast<double>();
     if (area.normalized().dot(rest) < -kFacesSquarely) own += area;
   }
   if (own.squaredNorm() == 0.0) return crushed;

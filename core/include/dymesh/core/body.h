@@ -24,6 +24,10 @@ struct BodyModel {
   double friction = 0.0;             ///< [-] vehicle-to-vehicle mu of spec §7
   bool rigid = false;                ///< barriers and poles: take no crush
   double median_edge = 0.0;          ///< [m] median edge length of `mesh` (its typical node spacing)
+  /// [m^2] each rest triangle's TriangleCross (twice its area along its outward normal), in single
+  /// precision: the conforming contact normal's test of which faces round a node face a master face,
+  /// and their weights (n_triangles)
+  std::vector<Eigen::Vector3f> rest_area;
 
   /// Stiffness of vertex v (its surface's coefficients).
   const Stiffness& VertexStiffness(int v) const { return stiffness[static_cast<int>(surface[v])]; }
@@ -60,7 +64,6 @@ struct BodyState {
   std::vector<std::uint8_t> normal_stale;  ///< UpdateTriangles' scratch: vertex normals to recompute (n_vertices)
   std::vector<Vec3> tri_normal;      ///< [-] unit outward normal, body frame (n_triangles)
   std::vector<double> tri_area;      ///< [m^2] current area (n_triangles)
-  std::vector<double> tri_area_orig; ///< [m^2] undamaged area (n_triangles)
   std::vector<int> touching;         ///< vertices in contact at their last update, ascending
   double law_energy = 0.0;           ///< [J] work of the node law on this body's nodes (integral g A d delta)
   double crush_energy = 0.0;         ///< [J] ledger: this body's share of the normal contact work
