@@ -33,7 +33,8 @@ struct BodyModel {
   const Stiffness& VertexStiffness(int v) const { return stiffness[static_cast<int>(surface[v])]; }
 };
 
-/// Builds a model: adjacency and surface classes from `mesh` (already in the body frame about the CG).
+/// Builds a model: adjacency, surface classes and rest area vectors from `mesh` (already in the body
+/// frame about the CG). The engine reads all three: build models with it.
 BodyModel MakeBodyModel(std::string name, TriMesh mesh, const std::array<Stiffness, kBodySurfaceCount>& stiffness,
                         double mass, const Mat3& inertia, double restitution, double friction, bool rigid);
 
