@@ -711,7 +711,8 @@ bool ContactEngine::LocateNode(const PassFrame& f, int v, bool was_touching, con
         ++accepted >= wanted)
       break;
   }
-  // between two deformable bodies, optionally the face's rest normal where the crush tipped it
+  // between two deformable bodies, the face's rest normal where the crush tipped it (contact_normal
+  // conforming, the default)
   if (accepted > 0 && options_.contact_normal == ContactNormal::kConforming && !f.master_model->rigid &&
       !f.slave_model->rigid)
     out->normal = ConformingNormal(f, v, out->triangle, out->normal);

@@ -1,7 +1,8 @@
 // Two identical deformable boxes head-on whose fronts do not line up: the second moved 0.37 in across
 // and 0.61 in up, so every edge of the contact lies between one front's nodes. With
-// contact.contact_normal "conforming" the pair meets the column model's closed form over the overlap;
-// with the default ("crushed") it crushes deeper and softer (README Known limits, measured here).
+// contact.contact_normal "conforming" (the default since the 60th session) the pair meets the column
+// model's closed form over the overlap; with "crushed" it crushes deeper and softer (README Known
+// limits, measured here).
 #include <gtest/gtest.h>
 
 #include <algorithm>
