@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 namespace dymesh {
 namespace {
 
@@ -61,6 +63,29 @@ PlanMotion PlanMotionOf(const BodyState& state) {
   return b;
 }
 
+double WobbleSpeed(const BodyModel& model, MotionModel motion, const BodyState& state, double horizon, double step) {
+  if (HoldsHeight(motion) || model.mass <= 0.0) return 0.0;
+  double reach = 0.0;  // [m] farthest vertex from the CG
+  for (const Vec3& v : state.vertices) reach = std::max(reach, v.norm());
+  // how far the angular velocity (earth frame) is from the present turn about the vertical
+  RigidState free = state.rigid;
+  const Vec3 turn(0.0, 0.0, (free.Rotation() * free.omega).z());
+  const auto departure = [&](const RigidState& s) { return (s.Rotation() * s.omega - turn).norm(); };
+  const double steps = std::ceil(horizon / step);
+  if (!(steps <= kMaxWobbleSteps)) {
+    // torque-free rotation keeps its energy T = w.Iw/2 >= I_min |w|^2 / 2
+    const double smallest = Eigen::SelfAdjointEigenSolver<Mat3>(model.inertia).eigenvalues().minCoeff();
+    return reach * (std::sqrt(free.omega.dot(model.inertia * free.omega) / smallest) + turn.norm());
+  }
+  // the host's own free rotation, step by step
+  double most = departure(free);
+  for (int i = 0; i < static_cast<int>(steps); ++i) {
+    IntegrateRigidBody(model, MotionModel::kFree6Dof, Vec3::Zero(), Vec3::Zero(), step, &free);
+    most = std::max(most, departure(free));
+  }
+  return reach * most;
+}
+
 double SoonestMeeting(const PlanMotion& pa, const PlanMotion& pb, double horizon, double deepening) {
   if (pa.outline.size() < 3 || pb.outline.size() < 3) return INFINITY;  // no outline in plan (a vertical sheet)
   // each corner's clearance to hold: out of the other outline; a corner inside it now (the bodies
@@ -71,8 +96,10 @@ double SoonestMeeting(const PlanMotion& pa, const PlanMotion& pb, double horizon
   // the relative CG speed, its own turn, and the other's turn about a point at most `reach` away
   const double speed = (pb.velocity - pa.velocity).norm();
   const double reach = (pb.position - pa.position).norm() + speed * horizon;
-  const double rate_a = speed + std::abs(pa.yaw_rate) * pa.radius + std::abs(pb.yaw_rate) * (reach + pa.radius);
-  const double rate_b = speed + std::abs(pb.yaw_rate) * pb.radius + std::abs(pa.yaw_rate) * (reach + pb.radius);
+  // and a body that rolls or pitches parts from its posed outline at its wobble speed
+  const double wobble = pa.wobble_speed + pb.wobble_speed;
+  const double rate_a = speed + std::abs(pa.yaw_rate) * pa.radius + std::abs(pb.yaw_rate) * (reach + pa.radius) + wobble;
+  const double rate_b = speed + std::abs(pb.yaw_rate) * pb.radius + std::abs(pa.yaw_rate) * (reach + pb.radius) + wobble;
   if (rate_a <= 0.0 && rate_b <= 0.0) return INFINITY;
   // conservative advancement: each corner's margin over its floor is safe for margin / rate; pose the
   // outlines after the shortest such time and go on, until the horizon or a margin is used up
@@ -81,7 +108,7 @@ double SoonestMeeting(const PlanMotion& pa, const PlanMotion& pb, double horizon
     const std::vector<double> clearance = Clearances(pa, pb, t);
     double safe = INFINITY;
     for (std::size_t i = 0; i < clearance.size(); ++i) {
-      const double margin = clearance[i] - floor[i], rate = i < pa.outline.size() ? rate_a : rate_b;
+      const double margin = clearance[i] - floor[i] - wobble * t, rate = i < pa.outline.size() ? rate_a : rate_b;
       if (margin <= 0.0) return t;
       if (rate > 0.0) safe = std::min(safe, margin / rate);
     }

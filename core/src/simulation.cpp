@@ -58,7 +58,7 @@ bool Simulation::Advance() {
   if (scenario_.stop_at_separation && last_contact_time_ >= 0.0 && time_ - last_contact_time_ >= kSeparationWindow &&
       time_ >= recheck_separation_) {
     const double remaining = scenario_.duration - time_;
-    const std::vector<PlanMotion> plans = PlanMotions();
+    const std::vector<PlanMotion> plans = PlanMotions(remaining);
     const double soonest = SoonestPairMeeting(plans, std::min(remaining, kSlapHorizon), remaining);
     separated_ = soonest == INFINITY;
     recheck_separation_ = time_ + soonest;
@@ -69,12 +69,15 @@ bool Simulation::Advance() {
   return !finished_;
 }
 
-std::vector<PlanMotion> Simulation::PlanMotions() const {
-  // every body seen in plan when all hold their height (else none: the separation window alone)
+std::vector<PlanMotion> Simulation::PlanMotions(double horizon) const {
+  // every body seen in plan; one that does not hold its height with how fast it rolls and pitches
+  // away from its outline over the horizon
   std::vector<PlanMotion> plans;
-  for (const BodySpec& b : scenario_.bodies)
-    if (!HoldsHeight(b.motion)) return plans;
-  for (int i = 0; i < engine_->body_count(); ++i) plans.push_back(PlanMotionOf(engine_->state(i)));
+  for (int i = 0; i < engine_->body_count(); ++i) {
+    plans.push_back(PlanMotionOf(engine_->state(i)));
+    plans.back().wobble_speed =
+        WobbleSpeed(engine_->model(i), scenario_.bodies[i].motion, engine_->state(i), horizon, scenario_.time_step);
+  }
   return plans;
 }
 

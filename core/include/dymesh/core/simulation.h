@@ -120,7 +120,7 @@ class Simulation {
   bool Integrate(const StepResult& step, double dt);
   void AcceptHostStates(const std::vector<RigidState>& states);
   void NoteContact(const StepResult& step, double dt);
-  std::vector<PlanMotion> PlanMotions() const;
+  std::vector<PlanMotion> PlanMotions(double horizon) const;
   double SoonestPairMeeting(const std::vector<PlanMotion>& plans, double touched_horizon, double remaining) const;
 
   Scenario scenario_;
