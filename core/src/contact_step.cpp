@@ -466,6 +466,20 @@ ContactEngine::PassSums ContactEngine::RunPass(int master, int slave, bool stage
   sums.master = master;
   sums.slave = slave;
   std::vector<int> now_touching, now_holding, now_located, moved;
+  // each list sized once (the chunks' points run to tens of thousands on a car's front)
+  std::size_t points = 0, touching = 0, holding = 0, located = 0, moved_count = 0;
+  for (std::size_t c = 0; c < ChunkCount(candidates.size()); ++c) {
+    points += chunks_[c].points.size();
+    touching += chunks_[c].touching.size();
+    holding += chunks_[c].holding.size();
+    located += chunks_[c].located.size();
+    moved_count += chunks_[c].moved.size();
+  }
+  sums.points.reserve(points);
+  now_touching.reserve(touching);
+  now_holding.reserve(holding);
+  now_located.reserve(located);
+  moved.reserve(moved_count);
   for (std::size_t c = 0; c < ChunkCount(candidates.size()); ++c) {
     const ChunkSums& part = chunks_[c];
     sums.normal += part.sums.normal;
