@@ -150,8 +150,7 @@ TEST(StopAtSeparation, ATailSlapIsPartOfTheCollision) {
 // mph. The stopped run takes the slap in and agrees with the run carried to its duration (delta-V in
 // plan: the gravity model's ground support goes on damping a tumbling box's vertical motion, and a
 // tumbling body's yaw rate keeps changing in free motion), or marks the later contact; the ledger
-// balances (2 %). Its CG centred, and 10 in low, so the wall's push rolls
-// and pitches it
+// balances (2 %). The box's CG centred, and 10 in low so that the wall's push rolls and pitches it
 TEST(StopAtSeparation, FreeAndGravityBodiesAreForecastToo) {
   int agreed = 0, runs = 0;
   for (const char* motion : {"free", "gravity"})
