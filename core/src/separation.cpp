@@ -77,7 +77,7 @@ double WobbleSpeed(const BodyModel& model, MotionModel motion, const BodyState& 
     const double smallest = Eigen::SelfAdjointEigenSolver<Mat3>(model.inertia).eigenvalues().minCoeff();
     return reach * (std::sqrt(free.omega.dot(model.inertia * free.omega) / smallest) + turn.norm());
   }
-  // the host's own free rotation, step by step
+  // the host's own free rotation (spec §8, Euler's equations without a moment), step by step
   double most = departure(free);
   for (int i = 0; i < static_cast<int>(steps); ++i) {
     IntegrateRigidBody(model, MotionModel::kFree6Dof, Vec3::Zero(), Vec3::Zero(), step, &free);
