@@ -113,7 +113,7 @@ BodyMemory MeasureBodyMemory(const BodyModel& model) {
   const BodyState s = MakeBodyState(model, RigidState{});
   m.state = Bytes(s.vertices) + Bytes(s.delta) + Bytes(s.delta_max) + Bytes(s.unload) + Bytes(s.node_force) +
             Bytes(s.node_area) + Bytes(s.update_step) + Bytes(s.step_start_deflection) + Bytes(s.vertex_normal) +
-            Bytes(s.normal_stale) + Bytes(s.tri_normal) + Bytes(s.tri_area) + Bytes(s.contact_normal) +
+            Bytes(s.update_mark) + Bytes(s.tri_normal) + Bytes(s.tri_area) + Bytes(s.contact_normal) +
             model.mesh.vertices.size() * sizeof(Vec3);  // the engine's pending crush of a simultaneous pass pair
   // Embree: scene, BVH and buffers allocated through a monitored device, plus the locator's own copies
   std::atomic<long long> embree_bytes{0};

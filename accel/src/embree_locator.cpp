@@ -9,6 +9,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "dymesh/core/parallel.h"
+
 namespace dymesh::accel {
 namespace {
 
@@ -119,15 +121,11 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
     hi = hi.cwiseMax(p);
   }
   inflation_ = 4.0 * std::max({lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff(), 1.0}) * std::ldexp(1.0, -23);
-  // inflated vertices; float corners, three per triangle, each triangle grown with its edge margin
-  // (padded so the last corner can be read with a 16-byte load)
+  // inflated vertices
   inflated_.resize(nv);
   affected_.assign(nv, 0);
   LinkTwins(mesh.vertices);
   for (size_t v = 0; v < nv; ++v) InflateVertex(mesh.vertices, static_cast<int>(v));
-  corner_buffer_.assign(9 * nt + 4, 0.0f);
-  edge_margin_.resize(nt);
-  for (size_t t = 0; t < nt; ++t) GrowTriangle(static_cast<int>(t));
   // groups: triangles in Morton order of their centres, cut into runs of kGroupSize (a small mesh: one run)
   const size_t group_size = nt <= kSingleGeometryLimit ? std::max<size_t>(nt, 1) : kGroupSize;
   std::vector<std::pair<std::uint32_t, int>> order(nt);
@@ -139,13 +137,19 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   }
   std::sort(order.begin(), order.end());
   group_triangles_.resize(nt);
-  if (group_size < nt) triangle_group_.resize(nt);  // a single group needs no table
+  if (group_size < nt) triangle_slot_.resize(nt);  // a single group needs no table
   for (size_t i = 0; i < nt; ++i) {
     group_triangles_[i] = order[i].second;
-    if (group_size < nt) triangle_group_[order[i].second] = static_cast<int>(i / group_size);
+    if (group_size < nt) triangle_slot_[order[i].second] = static_cast<int>(i);
   }
+  group_size_ = group_size;
   for (size_t first = 0; first < nt; first += group_size) group_first_.push_back(static_cast<int>(first));
   group_first_.push_back(static_cast<int>(nt));
+  // float corners, three per triangle in its group's slot, each triangle grown with its edge margin
+  // (padded so the last corner can be read with a 16-byte load)
+  corner_buffer_.assign(9 * nt + 4, 0.0f);
+  edge_margin_.resize(nt);
+  for (size_t t = 0; t < nt; ++t) GrowTriangle(static_cast<int>(t));
   // a deformable scene: DYNAMIC (two-level: only modified groups are refit), LOW quality, ROBUST
   // (not COMPACT: its indexed leaves refit in 40 % of the time but reported a different hit set on
   // one sample of the ensemble demo, 2026-11-24)
@@ -155,14 +159,18 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   for (size_t g = 0; g + 1 < group_first_.size(); ++g) {
     RTCGeometry geom = rtcNewGeometry(Dev(*device_), RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
-    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, corner_buffer_.data(), 0,
-                               3 * sizeof(float), 3 * nt);
+    // the group's own run of corners (a refit reads them in one sweep); a single group's are the
+    // mesh's triangles in order
     const int count = group_first_[g + 1] - group_first_[g];
+    const int first_slot = triangle_slot_.empty() ? 0 : group_first_[g];
+    const int slots = triangle_slot_.empty() ? static_cast<int>(nt) : count;
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, corner_buffer_.data(),
+                               9 * sizeof(float) * first_slot, 3 * sizeof(float), 3 * slots);
     auto* index = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
     for (int i = 0; i < count; ++i) {
-      const int t = group_triangles_[group_first_[g] + i];
-      for (int k = 0; k < 3; ++k) index[3 * i + k] = static_cast<unsigned>(3 * t + k);
+      const int slot = Slot(group_triangles_[group_first_[g] + i]) - first_slot;
+      for (int k = 0; k < 3; ++k) index[3 * i + k] = static_cast<unsigned>(3 * slot + k);
     }
     rtcCommitGeometry(geom);
     // determinism: geometry ids are the group indices
@@ -220,7 +228,7 @@ void EmbreeLocator::GrowTriangle(int t) {
   // at most (scale - 1) / 3; a sliver thinner than the margin always gets the double test
   const double margin = twice_area > 0.0 ? kInsideMargin * inflation_ * longest / twice_area + (scale - 1.0) / 3.0 : 1.0;
   edge_margin_[t] = static_cast<float>(std::min(margin, 1.0));
-  float* out = &corner_buffer_[9 * t];
+  float* out = &corner_buffer_[9 * Slot(t)];
   for (const Vec3& p : {a, b, c}) {
     const Vec3 grown = centre + scale * (p - centre);
     for (int k = 0; k < 3; ++k) *out++ = static_cast<float>(grown[k]);
@@ -268,20 +276,26 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
       }
     }
   }
-  for (int v : affected) InflateVertex(vertices, v);
-  // triangles with an inflated corner that moved, each grown again once (at its lowest such corner),
-  // and their groups refit
-  std::vector<char> dirty(geometries_.size(), 0);
+  // their inflated positions, in parallel (each writes its own vertex)
+  ForEachChunk(affected.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) InflateVertex(vertices, affected[i]);
+  });
+  // triangles with an inflated corner that moved, each listed once (at its lowest such corner), grown
+  // again in parallel (each writes its own corners), and their groups refit
+  std::vector<int> grown;
   for (int v : affected) {
     for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
       const int t = ring_.ids[k];
       const bool lowest = std::none_of(triangles_[t].begin(), triangles_[t].end(),
                                        [&](int c) { return c < v && affected_[c]; });
-      if (!lowest) continue;
-      GrowTriangle(t);
-      dirty[triangle_group_.empty() ? 0 : triangle_group_[t]] = 1;
+      if (lowest) grown.push_back(t);
     }
   }
+  ForEachChunk(grown.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) GrowTriangle(grown[i]);
+  });
+  std::vector<char> dirty(geometries_.size(), 0);
+  for (int t : grown) dirty[Slot(t) / group_size_] = 1;
   for (int v : affected) affected_[v] = 0;
   // refit only the groups that hold a changed vertex; the scene commits before its next queries
   for (size_t g = 0; g < geometries_.size(); ++g) {
@@ -357,7 +371,7 @@ size_t EmbreeLocator::HostBytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return bytes(geometries_) + bytes(inflated_) + bytes(corner_buffer_) + bytes(triangles_) +
          bytes(ring_.offsets) + bytes(ring_.ids) + bytes(group_first_) + bytes(group_triangles_) +
-         bytes(triangle_group_) + bytes(edge_margin_) + bytes(twin_next_) +
+         bytes(triangle_slot_) + bytes(edge_margin_) + bytes(twin_next_) +
          bytes(affected_);
 }
 

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
+
+#include "dymesh/core/parallel.h"
 
 namespace dymesh {
 
@@ -33,6 +36,18 @@ Vec3 MeanNormal(const BodyModel& model, const BodyState& s, int v, Weight weight
   }
   const double len = sum.norm();
   return len > 0.0 ? Vec3(sum / len) : Vec3::Zero();
+}
+
+// UpdateTriangles' marks on a vertex: it moved; its normal is listed for recomputing
+constexpr std::uint8_t kMovedMark = 1, kStaleMark = 2;
+
+// current area and unit outward normal of triangle t
+void UpdateTriangle(const BodyModel& model, int t, BodyState* s) {
+  const auto& tri = model.mesh.triangles[t];
+  const Vec3 cross = TriangleCross(s->vertices[tri[0]], s->vertices[tri[1]], s->vertices[tri[2]]);
+  const double twice_area = cross.norm();
+  s->tri_area[t] = 0.5 * twice_area;
+  s->tri_normal[t] = twice_area > 0.0 ? Vec3(cross / twice_area) : Vec3::Zero();
 }
 
 }  // namespace
@@ -78,7 +93,7 @@ BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid) {
   s.step_start_deflection.assign(nv, 0.0);
   s.contact_normal.assign(nv, Vec3::Zero());
   s.vertex_normal.assign(nv, Vec3::Zero());
-  s.normal_stale.assign(nv, 0);
+  s.update_mark.assign(nv, 0);
   s.tri_normal.assign(nt, Vec3::Zero());
   s.tri_area.assign(nt, 0.0);
   // triangle normals and areas, and vertex normals, of the undamaged mesh
@@ -90,31 +105,44 @@ BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid) {
 
 void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, BodyState* s) {
   const auto& adj = model.vertex_triangles;
-  for (int v : vertices) {
-    for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
-      // recompute each triangle around a moved vertex (a triangle may be done more than once)
-      const int t = adj.ids[k];
-      const auto& tri = model.mesh.triangles[t];
-      const Vec3& a = s->vertices[tri[0]];
-      const Vec3& b = s->vertices[tri[1]];
-      const Vec3& c = s->vertices[tri[2]];
-      const Vec3 cross = TriangleCross(a, b, c);
-      const double twice_area = cross.norm();
-      s->tri_area[t] = 0.5 * twice_area;
-      s->tri_normal[t] = twice_area > 0.0 ? Vec3(cross / twice_area) : Vec3::Zero();
-      for (int corner : tri) s->normal_stale[corner] = 1;
+  auto& mark = s->update_mark;
+  // the moved vertices marked (each listed once: a triangle is recomputed by one chunk)
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (mark[vertices[i]] & kMovedMark) {
+      for (std::size_t j = 0; j < i; ++j) mark[vertices[j]] = 0;
+      throw std::invalid_argument("UpdateTriangles: vertex listed twice");
     }
+    mark[vertices[i]] |= kMovedMark;
   }
-  // the normal of each corner of those triangles, once
+  // every corner of a triangle round them, listed once: its normal is recomputed
+  std::vector<int> corners;
   for (int v : vertices) {
     for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
       for (int corner : model.mesh.triangles[adj.ids[k]]) {
-        if (!s->normal_stale[corner]) continue;
-        s->normal_stale[corner] = 0;
-        s->vertex_normal[corner] = AreaWeightedNormal(model, *s, corner);
+        if (mark[corner] & kStaleMark) continue;
+        mark[corner] |= kStaleMark;
+        corners.push_back(corner);
       }
     }
   }
+  // each triangle round them once, at its lowest moved corner, in parallel (each writes its own slots)
+  ForEachChunk(vertices.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const int v = vertices[i];
+      for (int k = adj.offsets[v]; k < adj.offsets[v + 1]; ++k) {
+        const int t = adj.ids[k];
+        const auto& tri = model.mesh.triangles[t];
+        auto moved_before = [&](int c) { return c < v && (mark[c] & kMovedMark); };
+        if (std::none_of(tri.begin(), tri.end(), moved_before)) UpdateTriangle(model, t, s);
+      }
+    }
+  });
+  // then the corners' normals from those triangles, in parallel
+  ForEachChunk(corners.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) s->vertex_normal[corners[i]] = AreaWeightedNormal(model, *s, corners[i]);
+  });
+  for (int v : vertices) mark[v] = 0;
+  for (int c : corners) mark[c] = 0;
 }
 
 Vec3 AreaWeightedNormal(const BodyModel& model, const BodyState& s, int v) {

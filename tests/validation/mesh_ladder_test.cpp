@@ -52,7 +52,9 @@ void ExpectLadderConverges(const std::string& demo, bool turns) {
     EXPECT_EQ(r.status, RunStatus::kComplete) << demo << ", " << mesh;
     EXPECT_NEAR(r.delta_v, finest.delta_v, 0.02 * finest.delta_v) << demo << ", " << mesh;
     EXPECT_NEAR(r.crush_energy, finest.crush_energy, 0.02 * finest.crush_energy) << demo << ", " << mesh;
-    if (turns) EXPECT_NEAR(r.yaw_rate, finest.yaw_rate, 0.02 * std::abs(finest.yaw_rate)) << demo << ", " << mesh;
+    if (turns) {
+      EXPECT_NEAR(r.yaw_rate, finest.yaw_rate, 0.02 * std::abs(finest.yaw_rate)) << demo << ", " << mesh;
+    }
     EXPECT_NEAR(r.max_crush, finest.max_crush, 0.10 * finest.max_crush) << demo << ", " << mesh;
     EXPECT_NEAR(r.balance, 0.0, 0.02) << demo << ", " << mesh;
     std::printf("[measured] %s, %s: delta-V %.3f mph, crush energy %.0f ft.lbf, yaw rate %.2f deg/s, deepest "

@@ -124,8 +124,9 @@ bool StopKeepsTheCollision(const std::string& what, double heading, double e, co
     return false;
   }
   EXPECT_NEAR(stopped.plan_delta_v, full.plan_delta_v, 1e-9 * full.plan_delta_v) << label;
-  if (std::string(setup.motion) == "planar")
+  if (std::string(setup.motion) == "planar") {
     EXPECT_NEAR(stopped.yaw_rate, full.yaw_rate, 1e-9 * std::abs(full.yaw_rate) + 1e-9) << label;
+  }
   return true;
 }
 

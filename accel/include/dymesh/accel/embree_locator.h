@@ -66,18 +66,20 @@ class EmbreeLocator final : public Locator {
   void GrowTriangle(int t);
   void LinkTwins(const std::vector<Vec3>& vertices);
   int LowestTwin(int v) const;
+  int Slot(int t) const { return triangle_slot_.empty() ? t : triangle_slot_[t]; }
 
   std::shared_ptr<const EmbreeDevice> device_;
   void* scene_ = nullptr;
   std::vector<void*> geometries_;      // one RTCGeometry per triangle group
   std::vector<Eigen::Vector3f> inflated_;  // vertices moved `inflation_` out along their normals (n_vertices)
-  std::vector<float> corner_buffer_;   // float3 corners, three per triangle (+ padding)
+  std::vector<float> corner_buffer_;   // float3 corners, three per triangle slot (+ padding)
   double inflation_ = 0.0;             // [m] float surface offset outward along the vertex normals
   std::vector<std::array<int, 3>> triangles_;
   VertexTriangles ring_;               // triangles around each vertex
   std::vector<int> group_first_;       // first slot of each group in group_triangles_ (n_groups + 1)
   std::vector<int> group_triangles_;   // mesh triangles, group by group (n_triangles)
-  std::vector<int> triangle_group_;    // group of each mesh triangle (n_triangles; empty: one group)
+  std::vector<int> triangle_slot_;     // slot of each triangle, group by group (n_triangles; empty: slot = triangle)
+  size_t group_size_ = 1;              // triangles per group (the last may hold fewer)
   std::vector<float> edge_margin_;     // barycentric margin of a sure inside hit (n_triangles)
   std::vector<int> twin_next_;         // next vertex at the same rest position, a cycle (n_vertices)
   std::vector<std::uint8_t> affected_;  // scratch marks for Update, all 0 between calls (n_vertices)

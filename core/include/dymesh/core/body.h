@@ -62,7 +62,7 @@ struct BodyState {
   std::vector<Vec3> contact_normal;  ///< [-] master's outward normal at the node's last contact, body frame; zero when free (n_vertices)
   std::vector<double> step_start_deflection;  ///< [m] |Delta| when the current step began (n_vertices)
   std::vector<Vec3> vertex_normal;   ///< [-] AreaWeightedNormal of each vertex, kept by UpdateTriangles (n_vertices)
-  std::vector<std::uint8_t> normal_stale;  ///< UpdateTriangles' scratch: vertex normals to recompute (n_vertices)
+  std::vector<std::uint8_t> update_mark;  ///< UpdateTriangles' scratch marks, all 0 between calls (n_vertices)
   std::vector<Vec3> tri_normal;      ///< [-] unit outward normal, body frame (n_triangles)
   std::vector<double> tri_area;      ///< [m^2] current area (n_triangles)
   std::vector<int> touching;         ///< vertices in contact at their last update, ascending
@@ -77,7 +77,8 @@ BodyState MakeBodyState(const BodyModel& model, const RigidState& rigid);
 /// Recomputes normal and area of every triangle touching `vertices` (body frame), and the normal of
 /// every corner of those triangles (the one vertex normal a Location reads per node, kept instead of
 /// summed again from the faces around each node searched: a quarter of a car-to-car step at 1M
-/// triangles).
+/// triangles). Each vertex listed once (std::invalid_argument otherwise). Threading: in parallel
+/// chunks, every triangle and normal computed by one chunk alone, so results do not depend on threads.
 void UpdateTriangles(const BodyModel& model, const std::vector<int>& vertices, BodyState* state);
 
 /// Outward normal of vertex v, body frame, unit: the area-weighted mean of the surrounding triangle
