@@ -2,10 +2,14 @@
 // USE_LOCAL_AVERAGE_NORMAL) of a node on an edge or corner does not depend on how the faces are cut.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "dymesh/core/body.h"
+#include "dymesh/core/geometry.h"
 
 namespace dymesh {
 namespace {
@@ -78,6 +82,44 @@ TEST(AreaWeightedNormal, TheKeptVertexNormalsFollowEveryCrush) {
     turned += fresh.x() < 0.999 && model.mesh.vertices[v].x() > 2.28 ? 1 : 0;
   }
   EXPECT_GT(turned, 100);  // the crush did turn the front's normals
+}
+
+TEST(UpdateTriangles, InChunksEveryFaceAndNormalIsTheOneComputedAfresh) {
+  // the commit recomputes each face round the moved vertices once, at its lowest moved corner, and
+  // each corner's normal, in parallel chunks of 256: with the box's front half moved (about 2,000
+  // vertices, listed in a shuffled order) every face's area and normal and every vertex normal equal
+  // the ones computed afresh from the moved vertices, bit for bit
+  const BodyModel model = Box(60);
+  BodyState s = MakeBodyState(model, RigidState{});
+  std::vector<int> moved;
+  for (size_t v = 0; v < model.mesh.vertices.size(); ++v) {
+    const Vec3& p = model.mesh.vertices[v];
+    if (p.x() <= 0.0) continue;
+    s.vertices[v] = p - Vec3(0.1 * p.x() + 0.2 * std::sin(7.0 * p.y()) * std::cos(5.0 * p.z()), 0.05 * p.z(), 0.0);
+    moved.push_back(static_cast<int>(v));
+  }
+  ASSERT_GT(moved.size(), 4 * 256u);
+  std::shuffle(moved.begin(), moved.end(), std::mt19937(7));
+  UpdateTriangles(model, moved, &s);
+  for (size_t t = 0; t < model.mesh.triangles.size(); ++t) {
+    const auto& tri = model.mesh.triangles[t];
+    const Vec3 cross = TriangleCross(s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
+    EXPECT_EQ(s.tri_area[t], 0.5 * cross.norm()) << "face " << t;
+    EXPECT_EQ(s.tri_normal[t], Vec3(cross / cross.norm())) << "face " << t;
+  }
+  for (size_t v = 0; v < model.mesh.vertices.size(); ++v) {
+    EXPECT_EQ(s.vertex_normal[v], AreaWeightedNormal(model, s, static_cast<int>(v))) << "vertex " << v;
+  }
+  EXPECT_TRUE(std::all_of(s.update_mark.begin(), s.update_mark.end(), [](auto m) { return m == 0; }));
+}
+
+TEST(UpdateTriangles, RefusesAVertexListedTwiceAndKeepsItsMarksClear) {
+  // a vertex listed twice would have its faces written by two chunks at once
+  const BodyModel model = Box(1);
+  BodyState s = MakeBodyState(model, RigidState{});
+  EXPECT_THROW(UpdateTriangles(model, {3, 5, 3}, &s), std::invalid_argument);
+  EXPECT_TRUE(std::all_of(s.update_mark.begin(), s.update_mark.end(), [](auto m) { return m == 0; }));
+  EXPECT_NO_THROW(UpdateTriangles(model, {3, 5}, &s));
 }
 
 }  // namespace
