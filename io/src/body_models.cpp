@@ -1,6 +1,7 @@
 #include "dymesh/io/body_models.h"
 
 #include <cmath>
+#include <string>
 
 #include "dymesh/io/mesh_import.h"
 
@@ -17,14 +18,17 @@ Mat3 BoxInertia(double mass, const Vec3& size) {
   return Vec3(sq.y() + sq.z(), sq.x() + sq.z(), sq.x() + sq.y()).asDiagonal() * (mass / 12.0);
 }
 
+// "1 triangle", "3 triangles"
+std::string Count(int n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
+
 // a deformable body crushes into a volume: a sheet (one triangle, a flat panel) has none
 void RefuseFlatMesh(const TriMesh& mesh, const MeshStats& stats, const std::string& file, const std::string& field) {
   const double diagonal = (stats.max - stats.min).norm();
   if (std::abs(SignedVolume(mesh)) > kMinEnclosedVolume * diagonal * diagonal * diagonal) return;
   throw InputError(file, field,
-                   "a deformable body's mesh must enclose a volume; this one (" + std::to_string(stats.triangles) +
-                       " triangles, " + std::to_string(stats.open_edges) +
-                       " open edges) encloses none: give a closed or shell mesh, or set \"rigid\": true");
+                   "a deformable body's mesh must enclose a volume; this one (" + Count(stats.triangles, "triangle") +
+                       ", " + Count(stats.open_edges, "open edge") +
+                       ") encloses none: give a closed or shell mesh, or set \"rigid\": true");
 }
 
 }  // namespace

@@ -577,7 +577,7 @@ TEST_F(Trust, SingleOpenTriangleIsRefusedForADeformableBody) {
   Write("triangle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   const ProcessResult r = Run(WithCarMesh("triangle.obj"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_TRUE(Has(r.err, "s.json: bodies[0].mesh: a deformable body's mesh must enclose a volume; this one (1 triangles, 3 open edges)")) << r.err;
+  EXPECT_TRUE(Has(r.err, "s.json: bodies[0].mesh: a deformable body's mesh must enclose a volume; this one (1 triangle, 3 open edges)")) << r.err;
 }
 
 TEST_F(Trust, DirectoryAndFifoAsMeshAreNamedAsSuch) {
