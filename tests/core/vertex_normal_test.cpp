@@ -28,6 +28,19 @@ int VertexAt(const BodyModel& model, const Vec3& p) {
   return 0;
 }
 
+// pushes every vertex from x = `from` [m] forward back by `depth` [m] and unevenly (a wavy crush,
+// tilted up); returns them
+std::vector<int> PushBack(const BodyModel& model, double from, double depth, BodyState* s) {
+  std::vector<int> moved;
+  for (size_t v = 0; v < model.mesh.vertices.size(); ++v) {
+    const Vec3& p = model.mesh.vertices[v];
+    if (p.x() < from) continue;
+    s->vertices[v] = p - Vec3(depth + 0.2 * std::sin(7.0 * p.y()) * std::cos(5.0 * p.z()), 0.05 * p.z(), 0.0);
+    moved.push_back(static_cast<int>(v));
+  }
+  return moved;
+}
+
 TEST(LocalAverageNormal, EdgesAndCornersLookHalfwayBetweenTheirFacesHoweverTheFacesAreCut) {
   // each face counts by its angle at the node: a node on the front-right edge has 180 degrees of the
   // front and 180 of the side, so its normal is their bisector (1, 1, 0)/sqrt 2; a corner has 90
@@ -66,13 +79,7 @@ TEST(AreaWeightedNormal, TheKeptVertexNormalsFollowEveryCrush) {
   // faces, bit for bit, the moved nodes' neighbours included (they share the turned faces)
   const BodyModel model = Box(60);
   BodyState s = MakeBodyState(model, RigidState{});
-  std::vector<int> moved;
-  for (size_t v = 0; v < model.mesh.vertices.size(); ++v) {
-    const Vec3& p = model.mesh.vertices[v];
-    if (p.x() < 2.2) continue;
-    s.vertices[v] = p - Vec3(0.3 + 0.2 * std::sin(7.0 * p.y()) * std::cos(5.0 * p.z()), 0.05 * p.z(), 0.0);
-    moved.push_back(static_cast<int>(v));
-  }
+  const std::vector<int> moved = PushBack(model, 2.2, 0.3, &s);
   ASSERT_GT(moved.size(), 100u);
   UpdateTriangles(model, moved, &s);
   int turned = 0;
@@ -91,13 +98,7 @@ TEST(UpdateTriangles, InChunksEveryFaceAndNormalIsTheOneComputedAfresh) {
   // the ones computed afresh from the moved vertices, bit for bit
   const BodyModel model = Box(60);
   BodyState s = MakeBodyState(model, RigidState{});
-  std::vector<int> moved;
-  for (size_t v = 0; v < model.mesh.vertices.size(); ++v) {
-    const Vec3& p = model.mesh.vertices[v];
-    if (p.x() <= 0.0) continue;
-    s.vertices[v] = p - Vec3(0.1 * p.x() + 0.2 * std::sin(7.0 * p.y()) * std::cos(5.0 * p.z()), 0.05 * p.z(), 0.0);
-    moved.push_back(static_cast<int>(v));
-  }
+  std::vector<int> moved = PushBack(model, 0.0, 0.1, &s);
   ASSERT_GT(moved.size(), 4 * 256u);
   std::shuffle(moved.begin(), moved.end(), std::mt19937(7));
   UpdateTriangles(model, moved, &s);
