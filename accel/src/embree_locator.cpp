@@ -142,7 +142,6 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
     group_triangles_[i] = order[i].second;
     if (group_size < nt) triangle_slot_[order[i].second] = static_cast<int>(i);
   }
-  group_size_ = group_size;
   for (size_t first = 0; first < nt; first += group_size) group_first_.push_back(static_cast<int>(first));
   group_first_.push_back(static_cast<int>(nt));
   // float corners, three per triangle in its group's slot, each triangle grown with its edge margin
@@ -159,17 +158,15 @@ EmbreeLocator::EmbreeLocator(std::shared_ptr<const EmbreeDevice> device, const T
   for (size_t g = 0; g + 1 < group_first_.size(); ++g) {
     RTCGeometry geom = rtcNewGeometry(Dev(*device_), RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
-    // the group's own run of corners (a refit reads them in one sweep); a single group's are the
-    // mesh's triangles in order
-    const int count = group_first_[g + 1] - group_first_[g];
-    const int first_slot = triangle_slot_.empty() ? 0 : group_first_[g];
-    const int slots = triangle_slot_.empty() ? static_cast<int>(nt) : count;
+    // the group's own run of corners (a refit reads them in one sweep; a single group's run is the
+    // whole buffer, in triangle order)
+    const int first = group_first_[g], count = group_first_[g + 1] - first;
     rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, corner_buffer_.data(),
-                               9 * sizeof(float) * first_slot, 3 * sizeof(float), 3 * slots);
+                               9 * sizeof(float) * first, 3 * sizeof(float), 3 * count);
     auto* index = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
     for (int i = 0; i < count; ++i) {
-      const int slot = Slot(group_triangles_[group_first_[g] + i]) - first_slot;
+      const int slot = Slot(group_triangles_[first + i]) - first;
       for (int k = 0; k < 3; ++k) index[3 * i + k] = static_cast<unsigned>(3 * slot + k);
     }
     rtcCommitGeometry(geom);
@@ -295,7 +292,7 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
     for (std::size_t i = begin; i < end; ++i) GrowTriangle(grown[i]);
   });
   std::vector<char> dirty(geometries_.size(), 0);
-  for (int t : grown) dirty[Slot(t) / group_size_] = 1;
+  for (int t : grown) dirty[triangle_slot_.empty() ? 0 : triangle_slot_[t] / kGroupSize] = 1;
   for (int v : affected) affected_[v] = 0;
   // refit only the groups that hold a changed vertex; the scene commits before its next queries
   for (size_t g = 0; g < geometries_.size(); ++g) {

@@ -79,7 +79,6 @@ class EmbreeLocator final : public Locator {
   std::vector<int> group_first_;       // first slot of each group in group_triangles_ (n_groups + 1)
   std::vector<int> group_triangles_;   // mesh triangles, group by group (n_triangles)
   std::vector<int> triangle_slot_;     // slot of each triangle, group by group (n_triangles; empty: slot = triangle)
-  size_t group_size_ = 1;              // triangles per group (the last may hold fewer)
   std::vector<float> edge_margin_;     // barycentric margin of a sure inside hit (n_triangles)
   std::vector<int> twin_next_;         // next vertex at the same rest position, a cycle (n_vertices)
   std::vector<std::uint8_t> affected_;  // scratch marks for Update, all 0 between calls (n_vertices)
