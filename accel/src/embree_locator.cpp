@@ -261,13 +261,12 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
   for (int v : moved) {
     for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
       for (int corner : triangles_[ring_.ids[k]]) {
-        // the corner and the vertices at its rest position (they share its normal)
+        // the corner and the vertices at its rest position (they share its normal: marked together)
+        if (affected_[corner]) continue;
         int u = corner;
         do {
-          if (!affected_[u]) {
-            affected_[u] = 1;
-            affected.push_back(u);
-          }
+          affected_[u] = 1;
+          affected.push_back(u);
           u = twin_next_[u];
         } while (u != corner);
       }
