@@ -127,9 +127,6 @@ void BM_LocateCgal(benchmark::State& state) {
 }
 #endif
 
-// steps before the mid-pulse timing: 20 ms, the slave 0.27 m further in (0.37 m of closure in all)
-constexpr int kMidPulseWarmup = 40;
-
 // car-to-car contact: both passes, forces, sums, refit; the slave driven in at constant speed,
 // `warmup` steps before the timed ones
 void TimeSteps(benchmark::State& state, const ContactOptions& options, int warmup = 2) {

@@ -63,6 +63,9 @@ int RunBench(const BenchRequest& request) {
   // whole collision steps at one and N threads, and the memory of the master body
   const bench::StepTiming one = bench::MeasureSteps(setup, 1, 2, 5);
   const bench::StepTiming many = bench::MeasureSteps(setup, request.threads, 2, 5);
+  // the same in mid-pulse, most faces met already crushed (on the benchmark's cars 4-5 early steps)
+  const bench::StepTiming mid_one = bench::MeasureSteps(setup, 1, bench::kMidPulseWarmup, 5);
+  const bench::StepTiming mid_many = bench::MeasureSteps(setup, request.threads, bench::kMidPulseWarmup, 5);
   const bench::BodyMemory memory = bench::MeasureBodyMemory(*setup.master);
   const double nt = static_cast<double>(master.triangles.size());
 
@@ -73,6 +76,8 @@ int RunBench(const BenchRequest& request) {
       {"locate_per_second", {{"engine", engine}, {"raw_embree", raw}, {"neighbor_box", neighbor}}},
       {"ratio_to_raw_embree", {{"engine", engine / raw}, {"neighbor_box", neighbor / raw}}},
       {"step_ms", {{"threads_1", 1e3 * one.step_seconds}, {"threads_n", 1e3 * many.step_seconds}}},
+      {"mid_pulse_step_ms", {{"threads_1", 1e3 * mid_one.step_seconds}, {"threads_n", 1e3 * mid_many.step_seconds}}},
+      {"mid_pulse_segments_per_step", mid_many.segments},
       {"threads", request.threads},
       {"speedup", one.step_seconds / many.step_seconds},
       {"step_vs_raycast", many.step_seconds / many.raycast_seconds},
@@ -91,6 +96,9 @@ int RunBench(const BenchRequest& request) {
   std::printf("collision step        %.3f ms at 1 thread, %.3f ms at %d threads (%.2fx); %.2fx its ray casts\n",
               1e3 * one.step_seconds, 1e3 * many.step_seconds, request.threads, one.step_seconds / many.step_seconds,
               many.step_seconds / many.raycast_seconds);
+  std::printf("  in mid-pulse        %.3f ms at 1 thread, %.3f ms at %d threads (after %d steps; %lld segments per step)\n",
+              1e3 * mid_one.step_seconds, 1e3 * mid_many.step_seconds, request.threads, bench::kMidPulseWarmup,
+              mid_many.segments);
   std::printf("memory                %.0f bytes per triangle (model %.0f, state %.0f, Embree %.0f)\n",
               memory.total() / nt, memory.model / nt, memory.state / nt, memory.embree / nt);
   return 0;

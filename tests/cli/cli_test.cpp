@@ -215,6 +215,8 @@ TEST_F(Cli, BenchPrintsItsFiguresForUserMeshes) {
   for (const char* key : {"engine", "raw_embree", "neighbor_box"}) EXPECT_GT(j["locate_per_second"][key].get<double>(), 0.0) << key;
   EXPECT_FALSE(j["locate_per_second"].contains("cgal"));  // CGAL is the benchmark program's, never the command's
   EXPECT_GT(j["step_ms"]["threads_1"].get<double>(), 0.0);
+  EXPECT_GT(j["mid_pulse_step_ms"]["threads_1"].get<double>(), 0.0);
+  EXPECT_GT(j["mid_pulse_segments_per_step"].get<int>(), 0);  // still in contact 0.37 m in
   EXPECT_GT(j["bytes_per_triangle"].get<double>(), 100.0);
   EXPECT_LT(j["bytes_per_triangle"].get<double>(), 400.0);  // the memory target of issue 3
 }
