@@ -68,6 +68,18 @@ class RecordingLocator final : public Locator {
   mutable tbb::enumerable_thread_specific<std::vector<Segment>> segments_;
 };
 
+// FNV-1a over every body's current vertex positions, byte by byte (determinism: DESIGN asks the step
+// benchmark for a hash of the final state)
+std::uint64_t FinalStateHash(const ContactEngine& engine) {
+  std::uint64_t hash = 1469598103934665603ull;
+  for (int i = 0; i < engine.body_count(); ++i) {
+    const std::vector<Vec3>& vertices = engine.state(i).vertices;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(vertices.data());
+    for (std::size_t k = 0; k < vertices.size() * sizeof(Vec3); ++k) hash = (hash ^ bytes[k]) * 1099511628211ull;
+  }
+  return hash;
+}
+
 }  // namespace
 
 StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int steps, const ContactOptions& options) {
@@ -96,6 +108,7 @@ StepTiming MeasureSteps(const ContactSetup& setup, int threads, int warmup, int 
   for (RecordingLocator* r : recorders) r->SetRecording(true);
   step();
   for (RecordingLocator* r : recorders) timing.raycast_seconds += r->ReplayRaw(&timing.segments);
+  timing.state_hash = FinalStateHash(engine);
   return timing;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 // Cost of whole collision steps (all passes, forces, sums, refit) and of the raw ray casts inside them.
+#include <cstdint>
+
 #include "contact_setup.h"
 
 namespace dymesh::bench {
@@ -9,6 +11,7 @@ struct StepTiming {
   double step_seconds = 0.0;     ///< [s] mean over the timed steps
   double raycast_seconds = 0.0;  ///< [s] raw rtcIntersect1 for one step's segments, same threads
   long long segments = 0;        ///< segments cast in that step
+  std::uint64_t state_hash = 0;  ///< FNV-1a of both bodies' final vertex positions: equal at any thread count
 };
 
 /// Steps run before a mid-pulse timing: 20 ms at the 0.5 ms step, the slave 0.27 m further in (0.37 m

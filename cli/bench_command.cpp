@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +29,13 @@ double Rate(size_t segments, const std::function<void()>& locate) {
     best = std::max(best, segments / s);
   }
   return best;
+}
+
+// a 64-bit hash as 0x and 16 hex digits
+std::string Hex(std::uint64_t value) {
+  char text[24];
+  std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(value));
+  return text;
 }
 
 }  // namespace
@@ -66,6 +74,8 @@ int RunBench(const BenchRequest& request) {
   // the same in mid-pulse, most faces met already crushed (on the benchmark's cars 4-5 early steps)
   const bench::StepTiming mid_one = bench::MeasureSteps(setup, 1, bench::kMidPulseWarmup, 5);
   const bench::StepTiming mid_many = bench::MeasureSteps(setup, request.threads, bench::kMidPulseWarmup, 5);
+  // determinism: each timing's final state, bit for bit the same at 1 and N threads
+  const bool identical = one.state_hash == many.state_hash && mid_one.state_hash == mid_many.state_hash;
   const bench::BodyMemory memory = bench::MeasureBodyMemory(*setup.master);
   const double nt = static_cast<double>(master.triangles.size());
 
@@ -78,14 +88,19 @@ int RunBench(const BenchRequest& request) {
       {"step_ms", {{"threads_1", 1e3 * one.step_seconds}, {"threads_n", 1e3 * many.step_seconds}}},
       {"mid_pulse_step_ms", {{"threads_1", 1e3 * mid_one.step_seconds}, {"threads_n", 1e3 * mid_many.step_seconds}}},
       {"mid_pulse_segments_per_step", mid_many.segments},
+      {"final_state_hash", {{"threads_1", Hex(mid_one.state_hash)}, {"threads_n", Hex(mid_many.state_hash)}}},
+      {"bit_identical_across_threads", identical},
       {"threads", request.threads},
       {"speedup", one.step_seconds / many.step_seconds},
       {"step_vs_raycast", many.step_seconds / many.raycast_seconds},
       {"bytes_per_triangle", memory.total() / nt},
   };
+  if (!identical)
+    std::fprintf(stderr, "error: the final state differs between 1 and %d threads (a determinism bug)\n",
+                 request.threads);
   if (request.json) {
     std::printf("%s\n", j.dump(2).c_str());
-    return 0;
+    return identical ? 0 : 1;
   }
   std::printf("master %zu triangles, slave %zu triangles, %zu Location segments per pass\n", master.triangles.size(),
               setup.slave->mesh.triangles.size(), rays.size());
@@ -101,7 +116,9 @@ int RunBench(const BenchRequest& request) {
               mid_many.segments);
   std::printf("memory                %.0f bytes per triangle (model %.0f, state %.0f, Embree %.0f)\n",
               memory.total() / nt, memory.model / nt, memory.state / nt, memory.embree / nt);
-  return 0;
+  std::printf("final state           %s at 1 thread, %s at %d threads: %s\n", Hex(mid_one.state_hash).c_str(),
+              Hex(mid_many.state_hash).c_str(), request.threads, identical ? "bit-identical" : "DIFFERENT");
+  return identical ? 0 : 1;
 }
 
 }  // namespace dymesh::cli

@@ -207,7 +207,8 @@ TEST_F(Cli, ThreadCountDoesNotChangeTheOutputs) {
 TEST_F(Cli, BenchPrintsItsFiguresForUserMeshes) {
   // the small car against itself: every figure present and positive (speeds are not asserted here)
   const std::string mesh = std::string(DYMESH_DATA_DIR) + "/meshes/torcs_p406-lod6.obj";
-  const ProcessResult r = Dymesh({"bench", "--master", mesh, "--slave", mesh, "--axes=x,z,-y", "--json"});
+  const ProcessResult r =
+      Dymesh({"bench", "--master", mesh, "--slave", mesh, "--axes=x,z,-y", "--threads", "2", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Json j = Json::parse(r.out);
   EXPECT_EQ(j["master_triangles"].get<int>(), 1611);
@@ -217,6 +218,9 @@ TEST_F(Cli, BenchPrintsItsFiguresForUserMeshes) {
   EXPECT_GT(j["step_ms"]["threads_1"].get<double>(), 0.0);
   EXPECT_GT(j["mid_pulse_step_ms"]["threads_1"].get<double>(), 0.0);
   EXPECT_GT(j["mid_pulse_segments_per_step"].get<int>(), 0);  // still in contact 0.37 m in
+  // the final state at 1 and 2 threads, bit for bit (a hash of every vertex)
+  EXPECT_TRUE(j["bit_identical_across_threads"].get<bool>());
+  EXPECT_EQ(j["final_state_hash"]["threads_1"], j["final_state_hash"]["threads_n"]);
   EXPECT_GT(j["bytes_per_triangle"].get<double>(), 100.0);
   EXPECT_LT(j["bytes_per_triangle"].get<double>(), 400.0);  // the memory target of issue 3
 }
