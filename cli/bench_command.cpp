@@ -111,7 +111,7 @@ int RunBench(const BenchRequest& request) {
   std::printf("collision step        %.3f ms at 1 thread, %.3f ms at %d threads (%.2fx); %.2fx its ray casts\n",
               1e3 * one.step_seconds, 1e3 * many.step_seconds, request.threads, one.step_seconds / many.step_seconds,
               many.step_seconds / many.raycast_seconds);
-  std::printf("  in mid-pulse        %.3f ms at 1 thread, %.3f ms at %d threads (after %d steps; %lld segments per step)\n",
+  std::printf("  in mid-pulse        %.3f ms at 1 thread, %.3f ms at %d threads (after %d steps; %lld segments)\n",
               1e3 * mid_one.step_seconds, 1e3 * mid_many.step_seconds, request.threads, bench::kMidPulseWarmup,
               mid_many.segments);
   std::printf("memory                %.0f bytes per triangle (model %.0f, state %.0f, Embree %.0f)\n",
