@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cstring>
 #include <map>
 #include <mutex>
@@ -20,6 +19,7 @@
 #include "locate_rates.h"
 #include "dymesh/ensemble/design.h"
 #include "dymesh/ensemble/sample_run.h"
+#include "dymesh/ensemble/spec.h"
 #ifdef DYMESH_WITH_CGAL
 #include "cgal_tree.h"
 #endif
@@ -146,9 +146,7 @@ void TimeSteps(benchmark::State& state, const ContactOptions& options, int warmu
   state.counters["raycast_ms"] = 1e3 * timing.raycast_seconds;
   state.counters["step_vs_raycast"] = timing.step_seconds / timing.raycast_seconds;
   // determinism: the final state's hash, the same at any thread count
-  char label[32];
-  std::snprintf(label, sizeof label, "state 0x%016llx", static_cast<unsigned long long>(timing.state_hash));
-  state.SetLabel(label);
+  state.SetLabel("state " + ensemble::HashText(timing.state_hash));
 }
 
 void BM_Step(benchmark::State& state) { TimeSteps(state, ContactOptions{}); }

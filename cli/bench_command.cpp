@@ -3,12 +3,12 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
-#include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "contact_setup.h"
 #include "dymesh/core/scenario.h"
+#include "dymesh/ensemble/spec.h"
 #include "locate_rates.h"
 #include "step_timing.h"
 
@@ -29,13 +29,6 @@ double Rate(size_t segments, const std::function<void()>& locate) {
     best = std::max(best, segments / s);
   }
   return best;
-}
-
-// a 64-bit hash as 0x and 16 hex digits
-std::string Hex(std::uint64_t value) {
-  char text[24];
-  std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(value));
-  return text;
 }
 
 }  // namespace
@@ -88,7 +81,7 @@ int RunBench(const BenchRequest& request) {
       {"step_ms", {{"threads_1", 1e3 * one.step_seconds}, {"threads_n", 1e3 * many.step_seconds}}},
       {"mid_pulse_step_ms", {{"threads_1", 1e3 * mid_one.step_seconds}, {"threads_n", 1e3 * mid_many.step_seconds}}},
       {"mid_pulse_segments_per_step", mid_many.segments},
-      {"final_state_hash", {{"threads_1", Hex(mid_one.state_hash)}, {"threads_n", Hex(mid_many.state_hash)}}},
+      {"final_state_hash", {{"threads_1", ensemble::HashText(mid_one.state_hash)}, {"threads_n", ensemble::HashText(mid_many.state_hash)}}},
       {"bit_identical_across_threads", identical},
       {"threads", request.threads},
       {"speedup", one.step_seconds / many.step_seconds},
@@ -116,8 +109,8 @@ int RunBench(const BenchRequest& request) {
               mid_many.segments);
   std::printf("memory                %.0f bytes per triangle (model %.0f, state %.0f, Embree %.0f)\n",
               memory.total() / nt, memory.model / nt, memory.state / nt, memory.embree / nt);
-  std::printf("final state           %s at 1 thread, %s at %d threads: %s\n", Hex(mid_one.state_hash).c_str(),
-              Hex(mid_many.state_hash).c_str(), request.threads, identical ? "bit-identical" : "DIFFERENT");
+  std::printf("final state           %s at 1 thread, %s at %d threads: %s\n", ensemble::HashText(mid_one.state_hash).c_str(),
+              ensemble::HashText(mid_many.state_hash).c_str(), request.threads, identical ? "bit-identical" : "DIFFERENT");
   return identical ? 0 : 1;
 }
 
