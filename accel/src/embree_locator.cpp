@@ -39,15 +39,16 @@ struct CollectContext {
   RTCIntersectContext base;
   std::vector<Candidate>* out;
   const EmbreeLocator* locator;
+  double ray_length;  // the float ray direction's length (taken once per ray, not per hit)
 };
 
 // |cos| of the angle between the ray and the hit face's normal (0 for a degenerate face)
-double RayFaceCosine(const RTCFilterFunctionNArguments* args) {
+double RayFaceCosine(const RTCFilterFunctionNArguments* args, double ray_length) {
   const Vec3 ng(RTCHitN_Ng_x(args->hit, args->N, 0), RTCHitN_Ng_y(args->hit, args->N, 0),
                 RTCHitN_Ng_z(args->hit, args->N, 0));
   const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, 0), RTCRayN_dir_y(args->ray, args->N, 0),
                  RTCRayN_dir_z(args->ray, args->N, 0));
-  const double lengths = ng.norm() * dir.norm();
+  const double lengths = ng.norm() * ray_length;
   return lengths > 0.0 ? std::abs(ng.dot(dir)) / lengths : 0.0;
 }
 
@@ -62,7 +63,7 @@ void CollectAllHits(const RTCFilterFunctionNArguments* args) {
   // normal: a ray grazing a face (seen at 89.5 degrees on a car's flat side) landed on the neighbour
   // of the face the double test crosses, trusted as clear of its edges. Clear means the edge margin
   // over that cosine
-  const double clearance = std::min({u, v, 1.0f - u - v}) * RayFaceCosine(args);
+  const double clearance = std::min({u, v, 1.0f - u - v}) * RayFaceCosine(args, ctx->ray_length);
   ctx->out->push_back({triangle, clearance >= ctx->locator->EdgeMargin(triangle)});
   args->valid[0] = 0;
 }
@@ -276,22 +277,25 @@ void EmbreeLocator::Update(const std::vector<Vec3>& vertices, const std::vector<
   ForEachChunk(affected.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) InflateVertex(vertices, affected[i]);
   });
-  // triangles with an inflated corner that moved, each listed once (at its lowest such corner), grown
-  // again in parallel (each writes its own corners), and their groups refit
-  std::vector<int> grown;
-  for (int v : affected) {
-    for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
-      const int t = ring_.ids[k];
-      const bool lowest = std::none_of(triangles_[t].begin(), triangles_[t].end(),
-                                       [&](int c) { return c < v && affected_[c]; });
-      if (lowest) grown.push_back(t);
+  // triangles with an inflated corner that moved, each grown again once (at its lowest such corner),
+  // in parallel (each writes its own corners), and their groups refit
+  std::vector<std::vector<int>> grown(ChunkCount(affected.size()));
+  ForEachChunk(affected.size(), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const int v = affected[i];
+      for (int k = ring_.offsets[v]; k < ring_.offsets[v + 1]; ++k) {
+        const int t = ring_.ids[k];
+        const bool lowest = std::none_of(triangles_[t].begin(), triangles_[t].end(),
+                                         [&](int c) { return c < v && affected_[c]; });
+        if (!lowest) continue;
+        GrowTriangle(t);
+        grown[chunk].push_back(t);
+      }
     }
-  }
-  ForEachChunk(grown.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) GrowTriangle(grown[i]);
   });
   std::vector<char> dirty(geometries_.size(), 0);
-  for (int t : grown) dirty[triangle_slot_.empty() ? 0 : triangle_slot_[t] / kGroupSize] = 1;
+  for (const std::vector<int>& chunk : grown)
+    for (int t : chunk) dirty[triangle_slot_.empty() ? 0 : triangle_slot_[t] / kGroupSize] = 1;
   for (int v : affected) affected_[v] = 0;
   // refit only the groups that hold a changed vertex; the scene commits before its next queries
   for (size_t g = 0; g < geometries_.size(); ++g) {
@@ -333,6 +337,7 @@ void EmbreeLocator::TrianglesAlongSegment(int /*key*/, const Vec3& origin, const
   rh.ray.dir_x = static_cast<float>(dir.x());
   rh.ray.dir_y = static_cast<float>(dir.y());
   rh.ray.dir_z = static_cast<float>(dir.z());
+  ctx.ray_length = Vec3(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z).norm();
   rh.ray.tnear = 0.0f;
   rh.ray.tfar = static_cast<float>(length + 2.0 * slack);
   rh.ray.mask = 0xFFFFFFFFu;  // Debian's Embree is built with ray masks

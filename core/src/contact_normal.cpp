@@ -20,7 +20,8 @@ Vec3 ContactEngine::ConformingNormal(const PassFrame& f, int v, int t, const Vec
   const auto& face = f.master_model->mesh.triangles[t];
   const auto& at = f.master_model->mesh.vertices;
   const Vec3 rest = TriangleCross(at[face[0]], at[face[1]], at[face[2]]).normalized();
-  if (!(rest.dot(crushed) > kLeastRestAgreement)) return crushed;
+  // an uncrushed face (most of them early in a contact): both normals are the same, nothing to choose
+  if (rest == crushed || !(rest.dot(crushed) > kLeastRestAgreement)) return crushed;
   // the node's own rest faces that face the master's rest face, area-weighted (master frame): at the
   // edge of a contact the node's side faces are left out (they face across it)
   const BodyModel& slave = *f.slave_model;

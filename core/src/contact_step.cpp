@@ -635,8 +635,8 @@ Vec3 ContactEngine::SearchLine(const PassFrame& f, int v, const Vec3& v_rel, con
   switch (options_.search_direction) {
     case SearchDirection::kVelocity:
       // along the line of relative motion, turned to point into the slave (also while separating)
-      if (v_rel.norm() > kStillSpeed) {
-        const Vec3 dir = v_rel.normalized();
+      if (const double speed = v_rel.norm(); speed > kStillSpeed) {
+        const Vec3 dir = v_rel / speed;  // v_rel.normalized(), its norm taken once
         return dir.dot(inward) < 0.0 ? Vec3(-dir) : dir;
       }
       [[fallthrough]];  // no relative motion: fall back to the local normal
