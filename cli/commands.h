@@ -5,6 +5,10 @@
 #include <vector>
 
 /// The dymesh subcommands, callable from main() and from tests. They hold no physics.
+namespace dymesh {
+class OutputFolder;
+}
+
 namespace dymesh::cli {
 
 /// Exit codes (README "Exit codes"): 0 complete with no warnings; 1 failure (e.g. cannot write);
@@ -22,6 +26,8 @@ struct RunRequest {
   std::string locator = "embree";  ///< search: "embree", "neighbor_box" (DyMESH's own) or "brute_force"
   int threads = 0;                 ///< worker threads (0: all cores); results do not depend on it
   std::function<void()> on_setup_done;  ///< called once the run is set up, before the first step
+  /// called once the output folder is taken, before set-up (a stop during set-up removes what it created)
+  std::function<void(const OutputFolder&)> on_folder_taken;
 };
 
 /// Runs a scenario and writes its outputs. `interrupts()` counts the stop requests received so far

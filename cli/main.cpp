@@ -23,10 +23,40 @@ volatile std::sig_atomic_t stop_requests = 0;
 // set once set-up is over: before, a request ends the process at once (set-up writes nothing)
 volatile std::sig_atomic_t running = 0;
 
-// during set-up: die at once; then first request: stop at the next step; second: stop writing;
-// third: die at once
+// what a stop during set-up removes (the run has written nothing yet): the lock, then the folders the
+// run created, innermost first, each only while empty; copied before set-up, read by the handler
+struct SetupLeftovers {
+  static constexpr int kMaxFolders = 32, kMaxPath = 4096;
+  char lock[kMaxPath];
+  char folders[kMaxFolders][kMaxPath];
+  int count = 0;
+};
+SetupLeftovers leftovers;
+volatile std::sig_atomic_t leftovers_armed = 0;
+
+// keeps the folder's leftovers for the handler (none when the folder existed, or a path is too long)
+void ArmSetupLeftovers(const dymesh::OutputFolder& folder) {
+  const std::vector<std::string> created = folder.CreatedFolders();
+  const std::string lock = folder.LockPath();
+  if (created.empty() || created.size() > SetupLeftovers::kMaxFolders || lock.size() >= SetupLeftovers::kMaxPath) return;
+  for (const std::string& f : created)
+    if (f.size() >= SetupLeftovers::kMaxPath) return;
+  std::snprintf(leftovers.lock, sizeof leftovers.lock, "%s", lock.c_str());
+  for (std::size_t i = 0; i < created.size(); ++i)
+    std::snprintf(leftovers.folders[i], sizeof leftovers.folders[i], "%s", created[i].c_str());
+  leftovers.count = static_cast<int>(created.size());
+  leftovers_armed = 1;
+}
+
+// during set-up: remove the set-up's leftovers and die at once; then first request: stop at the next
+// step; second: stop writing; third: die at once (unlink and rmdir are async-signal-safe)
 extern "C" void OnStopSignal(int signal) {
   stop_requests = stop_requests + 1;
+  if (!running && leftovers_armed) {
+    unlink(leftovers.lock);
+    for (int i = 0; i < leftovers.count && rmdir(leftovers.folders[i]) == 0; ++i) {
+    }
+  }
   if (!running || stop_requests >= 3) {
     std::signal(signal, SIG_DFL);
     std::raise(signal);
@@ -190,6 +220,7 @@ int main(int argc, char** argv) {
   }
   request.terminal = isatty(STDOUT_FILENO) != 0;
   request.on_setup_done = [] { running = 1; };
+  request.on_folder_taken = ArmSetupLeftovers;
   InstallStopHandlers();
   return Guarded([&] {
     return dymesh::cli::RunCommand(request, [] { return static_cast<int>(stop_requests); }, std::cout, std::cerr);

@@ -81,6 +81,7 @@ int RunCommand(const RunRequest& request, const std::function<int()>& interrupts
   const Scenario scenario = LoadScenario(request.scenario_path);
   // the output folder before any work: writable, every name fits, locked for the whole run
   OutputFolder folder(request.out_dir, OutputFileNames(scenario), InputFiles(scenario));
+  if (request.on_folder_taken) request.on_folder_taken(folder);
   // the thread count changes the speed only (chunked, deterministic reductions)
   std::optional<tbb::global_control> thread_limit;
   if (request.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, request.threads);

@@ -3,11 +3,9 @@
 #include "dymesh/io/atomic_file.h"
 #include "dymesh/io/memory_budget.h"
 #include "dymesh/io/scenario_json.h"
+#include "assimp_read.h"
 #include "mesh_text_check.h"
 
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 
 #include <cerrno>
 #include <cmath>
@@ -94,26 +92,7 @@ TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
   // the file must exist
   if (const std::string problem = NotARegularFile(path); !problem.empty()) throw InputError(path, field, problem);
   CheckMeshText(path, field);
-  // read with assimp: triangles, shared vertices, every node's transform applied
-  Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
-  if (scene == nullptr)
-    throw InputError(path, field, std::string("cannot read mesh file: ") + importer.GetErrorString());
-  // collect the triangles of every mesh (points and lines are skipped)
-  TriMesh mesh;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* am = scene->mMeshes[m];
-    const int base = static_cast<int>(mesh.vertices.size());
-    for (unsigned v = 0; v < am->mNumVertices; ++v)
-      mesh.vertices.emplace_back(am->mVertices[v].x, am->mVertices[v].y, am->mVertices[v].z);
-    for (unsigned f = 0; f < am->mNumFaces; ++f) {
-      const aiFace& face = am->mFaces[f];
-      if (face.mNumIndices != 3) continue;
-      mesh.triangles.push_back({base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[1]),
-                                base + static_cast<int>(face.mIndices[2])});
-    }
-  }
+  TriMesh mesh = ReadMeshWithAssimp(path, field);
   // refuse non-finite coordinates and empty results
   for (const Vec3& p : mesh.vertices)
     if (!p.allFinite()) throw InputError(path, field, "mesh has non-finite vertex coordinates");

@@ -36,7 +36,6 @@ struct PlyElement {
   std::uint64_t count = 0;
   std::uint64_t min_bytes = 0;
   std::vector<PlyProperty> properties;
-  bool starts_with_list() const { return !properties.empty() && properties.front().list; }  // a face's indices
 };
 
 // bytes of a PLY scalar type (0 when unknown)
@@ -88,15 +87,19 @@ void RefuseDataPastCounts(std::istream& in, bool skip_comments, long number, con
                                                      "(or counts that include it)");
 }
 
+// a whole number token (strtod reads all of it)
+bool IsNumber(const std::string& token) {
+  char* end = nullptr;
+  std::strtod(token.c_str(), &end);
+  return !token.empty() && end == token.c_str() + token.size();
+}
+
 // an OBJ number token read whole ("0,1" or "1abc" are not numbers; assimp reads their prefix), with at
 // most kMaxObjDigits digits before its point (assimp's reader overflowed a 25-digit integer to 0)
 bool IsObjNumber(const std::string& token) {
-  char* end = nullptr;
-  std::strtod(token.c_str(), &end);
   const std::string mantissa = token.substr(0, token.find_first_of(".eE"));
   const auto digits = std::count_if(mantissa.begin(), mantissa.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-  return !token.empty() && end == token.c_str() + token.size() && token.find_first_of("xX") == std::string::npos &&
-         digits <= kMaxObjDigits;
+  return IsNumber(token) && token.find_first_of("xX") == std::string::npos && digits <= kMaxObjDigits;
 }
 
 // a "v" line's numbers: x y z, x y z w (w = 1) or x y z r g b, each read whole ("" when sound). assimp 5.2
@@ -172,6 +175,36 @@ std::string FaceProblem(const std::string& line, std::uint64_t vertices) {
   return "";
 }
 
+// one ASCII PLY record: a value per scalar property, a count and that many values per list, nothing
+// more (assimp read a short vertex line's missing coordinate from the next line, and ignored a face's
+// index past its count); a face's leading list names 3 or more existing vertices ("" when sound)
+std::string AsciiRecordProblem(const std::string& line, const PlyElement& element, std::uint64_t vertices) {
+  std::istringstream tokens(line);
+  std::string token;
+  std::uint64_t read = 0;
+  const auto ends_early = [&] { return "the line ends after " + std::to_string(read) + " values; its properties ask for more"; };
+  for (std::size_t k = 0; k < element.properties.size(); ++k) {
+    const PlyProperty& p = element.properties[k];
+    // a face's leading list: its vertex indices
+    const bool indices = element.name == "face" && k == 0 && p.list;
+    std::uint64_t values = 1;
+    if (p.list) {
+      if (!(tokens >> token)) return ends_early();
+      ++read;
+      if (!IndexBelow(token, kMaxFaceListCount)) return "expected a list count, got \"" + token + "\"";
+      values = std::stoull(token);
+      if (indices && values < 3) return "expected a face of at least three vertices";
+    }
+    for (std::uint64_t i = 0; i < values; ++i, ++read) {
+      if (!(tokens >> token)) return ends_early();
+      if (indices && !IndexBelow(token, vertices))
+        return "vertex index \"" + token + "\" is not one of the " + std::to_string(vertices) + " vertices";
+      if (!indices && !IsNumber(token)) return "expected a number, got \"" + token + "\"";
+    }
+  }
+  if (tokens >> token) return "expected " + std::to_string(read) + " values, got more (\"" + token + "\")";
+  return "";
+}
 
 // reads binary PLY records: integers of a PLY type in the file's byte order
 class BinaryPlyReader {
@@ -285,15 +318,23 @@ void CheckPly(const std::string& path, const std::string& field) {
     CheckBinaryPlyFaces(in, format == "binary_big_endian", elements, vertices, path, field);
     return;
   }
-  // ASCII: every counted line is there, faces (led by their index list) name existing vertices
+  // ASCII: every counted line is there and holds its properties' values, faces (led by their index
+  // list) name existing vertices
   for (const PlyElement& e : elements)
     for (std::uint64_t i = 0; i < e.count; ++i) {
-      if (!NextDataLine(in, false, &number, &line))
-        throw InputError(path, field, "PLY header counts " + std::to_string(e.count) + " " + e.name + " lines; the file ends after " +
-                                          std::to_string(i));
-      if (e.name != "face" || !e.starts_with_list()) continue;
-      if (const std::string problem = FaceProblem(line, vertices); !problem.empty())
-        throw InputError(path, field, At(number, line) + ": " + problem);
+      const auto too_few = [&](std::uint64_t lines) {
+        return InputError(path, field, "PLY header counts " + std::to_string(e.count) + " " + e.name +
+                                           " lines; the file ends after " + std::to_string(lines));
+      };
+      if (!NextDataLine(in, false, &number, &line)) throw too_few(i);
+      const std::string problem = AsciiRecordProblem(line, e, vertices);
+      if (problem.empty()) continue;
+      // a line that does not fit is most often the data ending before the counts: say that, if so
+      const long at = number;
+      std::uint64_t after = 0;
+      for (std::string rest; after + i + 1 < e.count && NextDataLine(in, false, &number, &rest);) ++after;
+      if (after + i + 1 < e.count) throw too_few(i + 1 + after);
+      throw InputError(path, field, At(at, line) + ": " + problem);
     }
   RefuseDataPastCounts(in, false, number, path, field);
 }

@@ -191,7 +191,7 @@ void OutputFolder::TakeFolder() {
   RefuseOtherKind(dir_, outputs_);
   RefuseNonRegularFiles(dir_, names);
   // exclusive for the whole run; the kernel releases it if the process dies
-  const std::string lock = (fs::path(dir_) / kLockFileName).string();
+  const std::string lock = LockPath();
   lock_fd_ = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_fd_ < 0) Refuse(dir_, "cannot create the lock file " + lock + ": " + std::strerror(errno));
   if (flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
@@ -208,6 +208,18 @@ void OutputFolder::TakeFolder() {
 OutputFolder::~OutputFolder() {
   if (!created_.empty()) RemoveIfUnused(dir_, created_);
   if (lock_fd_ >= 0) close(lock_fd_);
+}
+
+std::string OutputFolder::LockPath() const { return (fs::path(dir_) / kLockFileName).string(); }
+
+std::vector<std::string> OutputFolder::CreatedFolders() const {
+  std::vector<std::string> folders;
+  if (created_.empty()) return folders;
+  for (fs::path folder = AbsoluteFolder(dir_);; folder = folder.parent_path()) {
+    folders.push_back(folder.string());
+    if (folder == fs::path(created_) || !folder.has_parent_path() || folder.parent_path() == folder) break;
+  }
+  return folders;
 }
 
 void OutputFolder::ReplacePreviousRun() {

@@ -578,6 +578,16 @@ TEST_F(Trust, SingleOpenTriangleIsRefusedForADeformableBody) {
   const ProcessResult r = Run(WithCarMesh("triangle.obj"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Has(r.err, "s.json: bodies[0].mesh: a deformable body's mesh must enclose a volume; this one (1 triangle, 3 open edges)")) << r.err;
+  // turned out of every axis plane: measured about the bounds centre (off its plane) it enclosed a
+  // tetrahedron and was taken; a flat panel of two such triangles likewise
+  Write("tilted.obj", "v 0.535623 0.854032 0.972764\nv 0.590014 0.765874 0.851068\nv 0.524485 0.787274 0.978955\nf 1 2 3\n");
+  const ProcessResult tilted = Run(WithCarMesh("tilted.obj"));
+  EXPECT_EQ(tilted.exit_code, 2);
+  EXPECT_TRUE(Has(tilted.err, "must enclose a volume; this one (1 triangle, 3 open edges)")) << tilted.err;
+  Write("panel.obj", "v 0 0 0\nv 1 0.3 0.2\nv 1.2 1.3 0.9\nv 0.2 1 0.7\nf 1 2 3\nf 1 3 4\n");
+  const ProcessResult panel = Run(WithCarMesh("panel.obj"));
+  EXPECT_EQ(panel.exit_code, 2);
+  EXPECT_TRUE(Has(panel.err, "must enclose a volume; this one (2 triangles, 4 open edges)")) << panel.err;
 }
 
 TEST_F(Trust, DirectoryAndFifoAsMeshAreNamedAsSuch) {
@@ -604,20 +614,30 @@ TEST_F(Trust, BoxTooBigForMemoryIsRefusedBeforeItIsBuilt) {
 }
 
 TEST_F(Trust, TerminateDuringSetUpEndsAtOnce) {
-  // a long set-up (the car subdivided to ~0.5 M triangles), stopped 0.5 s in
+  // a long set-up (the car subdivided to ~0.5 M triangles), stopped 0.5 s in: it ends at once and
+  // removes the folders it created (they hold nothing but its lock; before, the lock and its folders
+  // were left), nested ones too; a folder that existed keeps its files
   Json j = BoxScenario();
   j["bodies"][0]["mesh"]["box"]["segments"] = {30, 110, 50};
   j["bodies"][0]["mesh"]["subdivisions"] = 2;
+  const std::string scenario = Write("s.json", j.dump());
   fs::create_directories(dir_ / "process");
-  const auto p = dymesh::testing::StartProcess({DYMESH_CLI, "run", Write("s.json", j.dump()), "--out", (dir_ / "out").string()},
-                                               dir_ / "process" / "out.txt", dir_ / "process" / "err.txt");
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  const auto sent = std::chrono::steady_clock::now();
-  kill(p.pid, SIGTERM);
-  const int code = dymesh::testing::WaitProcess(p, 60.0);
-  EXPECT_EQ(code, 128 + SIGTERM);
-  EXPECT_LT(std::chrono::steady_clock::now() - sent, std::chrono::seconds(2));
-  EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+  fs::create_directories(dir_ / "kept");
+  Write("kept/notes.txt", "mine");
+  for (const fs::path& out : {dir_ / "out", dir_ / "made" / "a" / "b", dir_ / "kept"}) {
+    const auto p = dymesh::testing::StartProcess({DYMESH_CLI, "run", scenario, "--out", out.string()},
+                                                 dir_ / "process" / "out.txt", dir_ / "process" / "err.txt");
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const auto sent = std::chrono::steady_clock::now();
+    kill(p.pid, SIGTERM);
+    const int code = dymesh::testing::WaitProcess(p, 60.0);
+    EXPECT_EQ(code, 128 + SIGTERM) << out;
+    EXPECT_LT(std::chrono::steady_clock::now() - sent, std::chrono::seconds(2)) << out;
+    EXPECT_FALSE(fs::exists(out / "summary.json")) << out;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  EXPECT_FALSE(fs::exists(dir_ / "made"));
+  EXPECT_EQ(ReadFile(dir_ / "kept" / "notes.txt"), "mine");
 }
 
 // ---- output folders ---------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 #include "dymesh/core/mesh.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -307,6 +308,82 @@ TEST(MeshFiles, PlyAndOffWhoseCountsOrIndicesAreWrongAreRefused) {
   EXPECT_NE(LoadProblem(dir, "long.obj", "v -9999999999999999999999999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").find("expected a number, got \"-999"),
             std::string::npos);
   EXPECT_EQ(LoadProblem(dir, "fine.obj", "v -0.12345678901234567890123 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "");
+}
+
+// an ASCII PLY record holds a value per property and no more: assimp read a short vertex line's missing
+// coordinate from the next line (the cube came out 4 m tall) and ignored an index past a face's count
+TEST(MeshFiles, PlyRecordsHoldTheirPropertiesValuesAndNoMore) {
+  const TempFolder dir;
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  EXPECT_EQ(LoadProblem(dir, "ok.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "");
+  EXPECT_NE(LoadProblem(dir, "short.ply", header + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n")
+                .find("line 11 (\"1 0\"): the line ends after 2 values; its properties ask for more"), std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "long.ply", header + "0 0 0\n1 0 0 5\n0 1 0\n3 0 1 2\n").find("expected 3 values, got more (\"5\")"),
+            std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "extra.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 7\n").find("expected 4 values, got more (\"7\")"),
+            std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "word.ply", header + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n").find("expected a number, got \"zero\""),
+            std::string::npos);
+}
+
+// assimp picks its reader by the file's extension, or, for one it does not know, by the content: a PLY
+// named .dat passed the text checks and crashed it, aborted it or dropped a face unsaid
+TEST(MeshFiles, UnknownExtensionIsRefused) {
+  const TempFolder dir;
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1 0 0\n0 1 0\n3 0 1 4000000000\n";
+  EXPECT_NE(LoadProblem(dir, "cube.dat", ply).find("unknown mesh file extension \".dat\": expected one assimp reads by name"),
+            std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "cube", ply).find("unknown mesh file extension \"\""), std::string::npos);
+  EXPECT_EQ(LoadProblem(dir, "TRI.OBJ", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "");  // any case
+}
+
+// a glTF of three vertices and two triangles in `bin` (an external buffer), the second triangle's last
+// index `last`
+std::string TwoTriangleGltf(const TempFolder& dir, const std::string& bin, unsigned last) {
+  const float vertices[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const unsigned indices[6] = {0, 1, 2, 0, 2, last};
+  std::ofstream out(dir / bin, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(vertices), sizeof vertices);
+  out.write(reinterpret_cast<const char*>(indices), sizeof indices);
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+    "buffers": [{"byteLength": 60, "uri": ")" + bin + R"("}],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 24}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                  {"bufferView": 1, "componentType": 5125, "count": 6, "type": "SCALAR"}]})";
+}
+
+// assimp drops a glTF face with an index past the vertices and only warns; it opens the files a model
+// references as they come (a FIFO blocked the run)
+TEST(MeshFiles, DroppedFacesAndReferencedFifosAreRefused) {
+  const TempFolder dir;
+  EXPECT_EQ(LoadProblem(dir, "two.gltf", TwoTriangleGltf(dir, "two.bin", 1)), "");
+  EXPECT_NE(LoadProblem(dir, "past.gltf", TwoTriangleGltf(dir, "past.bin", 99))
+                .find("assimp left part of the mesh out: Some faces had out-of-range indices. Those faces were dropped."),
+            std::string::npos);
+  ASSERT_EQ(mkfifo((dir / "pipe.bin").c_str(), 0644), 0);
+  const std::string gltf = TwoTriangleGltf(dir, "unused.bin", 1);
+  std::string piped = gltf;
+  piped.replace(piped.find("unused.bin"), 10, "pipe.bin");
+  const std::string problem = LoadProblem(dir, "piped.gltf", piped);
+  EXPECT_NE(problem.find("cannot read mesh file: "), std::string::npos) << problem;
+  EXPECT_NE(problem.find("pipe.bin: a FIFO (named pipe), not a file)"), std::string::npos) << problem;
+  // an OBJ's material library is not needed: a FIFO there is skipped, the mesh read
+  ASSERT_EQ(mkfifo((dir / "pipe.mtl").c_str(), 0644), 0);
+  EXPECT_EQ(LoadProblem(dir, "materials.obj", "mtllib pipe.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "");
+}
+
+// assimp's message on an unreadable file is quoted shortened (its STL reader quoted the rest of the file)
+TEST(MeshFiles, AssimpMessageIsQuotedShort) {
+  const TempFolder dir;
+  std::string stl = "solid t\nfacet normal 0 0 0\nouter loop\nvertex 0 0 x\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  for (int i = 0; i < 50; ++i) stl += "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  const std::string problem = LoadProblem(dir, "bad.stl", stl + "endsolid t\n");
+  EXPECT_NE(problem.find("cannot read mesh file: "), std::string::npos) << problem;
+  EXPECT_LT(problem.size(), 400u) << problem;
 }
 
 TEST(BuildBodyMesh, MapsAxesScalesAndFits) {

@@ -40,6 +40,12 @@ class OutputFolder {
 
   const std::string& dir() const { return dir_; }
 
+  /// The lock file's path, and the folders this run created, innermost first (none when the folder
+  /// existed): what a process stopped before its first output removes (the lock, then each folder
+  /// while it is empty), from a signal handler if need be.
+  std::string LockPath() const;
+  std::vector<std::string> CreatedFolders() const;
+
  private:
   void TakeFolder();  // checks the folder and takes its lock
 
