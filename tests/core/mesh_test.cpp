@@ -364,6 +364,9 @@ TEST(MeshFiles, DroppedFacesAndReferencedFifosAreRefused) {
   EXPECT_NE(LoadProblem(dir, "past.gltf", TwoTriangleGltf(dir, "past.bin", 99))
                 .find("assimp left part of the mesh out: Some faces had out-of-range indices. Those faces were dropped."),
             std::string::npos);
+  // read again in the same process (assimp's logger drops a message that repeats the one before)
+  EXPECT_NE(LoadProblem(dir, "past.gltf", TwoTriangleGltf(dir, "past.bin", 99)).find("assimp left part of the mesh out"),
+            std::string::npos);
   ASSERT_EQ(mkfifo((dir / "pipe.bin").c_str(), 0644), 0);
   const std::string gltf = TwoTriangleGltf(dir, "unused.bin", 1);
   std::string piped = gltf;
