@@ -117,6 +117,11 @@ TriMesh ReadMeshWithAssimp(const std::string& path, const std::string& field) {
     for (unsigned f = 0; f < am->mNumFaces; ++f) {
       const aiFace& face = am->mFaces[f];
       if (face.mNumIndices != 3) continue;
+      // an index past the mesh's vertices (an importer that does not check them) is refused, not followed
+      for (unsigned k = 0; k < 3; ++k)
+        if (face.mIndices[k] >= am->mNumVertices)
+          throw InputError(path, field, "a face's vertex index " + std::to_string(face.mIndices[k]) + " is past the " +
+                                            std::to_string(am->mNumVertices) + " vertices assimp read");
       mesh.triangles.push_back({base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[1]),
                                 base + static_cast<int>(face.mIndices[2])});
     }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "dymesh/core/geometry.h"
+#include "dymesh/core/run_start.h"
 #include "dymesh/io/mesh_import.h"
 
 namespace dymesh {
@@ -44,6 +45,9 @@ double VolumeAboutSurfaceCentroid(const TriMesh& mesh) {
 
 // a deformable body crushes into a volume: a sheet (one triangle, a flat panel) has none
 void RefuseFlatMesh(const TriMesh& mesh, const MeshStats& stats, const std::string& file, const std::string& field) {
+  // a body of an impossible size is refused for that, by name (a vertex 100 km off stretched the bounds)
+  const double extent = (stats.max - stats.min).maxCoeff();
+  if (extent < kBodySizeRange.hard_lo || extent > kBodySizeRange.hard_hi) return;
   const double diagonal = (stats.max - stats.min).norm();
   if (std::abs(VolumeAboutSurfaceCentroid(mesh)) > kMinEnclosedVolume * diagonal * diagonal * diagonal) return;
   throw InputError(file, field,

@@ -95,7 +95,9 @@ TriMesh LoadMeshFile(const std::string& path, const std::string& field) {
   TriMesh mesh = ReadMeshWithAssimp(path, field);
   // refuse non-finite coordinates and empty results
   for (const Vec3& p : mesh.vertices)
-    if (!p.allFinite()) throw InputError(path, field, "mesh has non-finite vertex coordinates");
+    if (!p.allFinite())
+      throw InputError(path, field, "mesh has vertex coordinates that are not finite as assimp reads them (in single "
+                                    "precision: beyond 3.4e38 a coordinate is infinite)");
   if (mesh.triangles.empty()) throw InputError(path, field, "mesh file has no triangles");
   // merge the vertices shared between assimp meshes
   TriMesh welded = WeldRelative(mesh);

@@ -61,10 +61,31 @@ bool IndexBelow(const std::string& token, std::uint64_t limit) {
   return std::stoull(token) < limit;
 }
 
-// the next data line that is not blank (and, for OFF, not a comment); false at the end of the file
-bool NextDataLine(std::istream& in, bool skip_comments, long* number, std::string* line) {
+// "line N ("...")" for messages
+std::string At(long number, const std::string& line) {
+  return "line " + std::to_string(number) + " (\"" + Printable(line.substr(0, 60)) + "\")";
+}
+
+// a control character inside a line (not a tab, nor the CR of a CRLF ending): assimp ends a line at a
+// CR or a form feed and a number at a NUL, where the checks here read on (a face "f 1 3<CR>2" passed
+// them and assimp dropped it as "f 1 3"; a form feed in a PLY vertex line aborted it)
+void RefuseControlCharacters(const std::string& path, const std::string& field, long number, const std::string& line) {
+  const std::size_t end = !line.empty() && line.back() == '\r' ? line.size() - 1 : line.size();
+  for (std::size_t i = 0; i < end; ++i) {
+    const auto c = static_cast<unsigned char>(line[i]);
+    if ((c < 0x20 && c != '\t') || c == 0x7F)
+      throw InputError(path, field, At(number, line) + ": a control character (byte " + std::to_string(c) +
+                                        ") inside the line; expected text (assimp breaks lines and numbers there)");
+  }
+}
+
+// the next data line that is not blank (and, for OFF, not a comment); false at the end of the file;
+// a control character inside a line is refused
+bool NextDataLine(std::istream& in, bool skip_comments, long* number, std::string* line, const std::string& path,
+                  const std::string& field) {
   while (std::getline(in, *line)) {
     ++*number;
+    RefuseControlCharacters(path, field, *number, *line);
     const auto first = line->find_first_not_of(" \t\r");
     if (first == std::string::npos || (skip_comments && (*line)[first] == '#')) continue;
     return true;
@@ -72,17 +93,12 @@ bool NextDataLine(std::istream& in, bool skip_comments, long* number, std::strin
   return false;
 }
 
-// "line N ("...")" for messages
-std::string At(long number, const std::string& line) {
-  return "line " + std::to_string(number) + " (\"" + Printable(line.substr(0, 60)) + "\")";
-}
-
 // a PLY or OFF file ends with the data its header counts: a further line (an extra face) was ignored
 // without a word
 void RefuseDataPastCounts(std::istream& in, bool skip_comments, long number, const std::string& path,
                           const std::string& field) {
   std::string line;
-  if (NextDataLine(in, skip_comments, &number, &line))
+  if (NextDataLine(in, skip_comments, &number, &line, path, field))
     throw InputError(path, field, At(number, line) + ": data past the header's counts; expected the end of the file "
                                                      "(or counts that include it)");
 }
@@ -139,7 +155,9 @@ bool IsObjCorner(const std::string& token) {
 void CheckObjLines(const std::string& path, const std::string& field) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
+  long faces = 0;
   for (long number = 1; std::getline(in, line); ++number) {
+    RefuseControlCharacters(path, field, number, line);
     std::istringstream tokens(line);
     std::string keyword, token;
     tokens >> keyword;
@@ -149,6 +167,7 @@ void CheckObjLines(const std::string& path, const std::string& field) {
     if (keyword == "v") {
       if (const std::string problem = ObjVertexProblem(rest); !problem.empty()) throw InputError(path, field, at + ": " + problem);
     } else if (keyword == "f") {
+      ++faces;
       if (rest.size() < 3) throw InputError(path, field, at + ": expected a face of at least three vertices");
       // assimp's triangulation of one polygon is quadratic in its corners (100,000 took 38 s)
       if (rest.size() > kMaxObjFaceCorners)
@@ -158,6 +177,8 @@ void CheckObjLines(const std::string& path, const std::string& field) {
         if (!IsObjCorner(t)) throw InputError(path, field, at + ": expected a vertex index (v, v/vt, v//vn or v/vt/vn), got \"" + t + "\"");
     }
   }
+  // assimp says "all meshes are orphaned" of a file of vertices only
+  if (faces == 0) throw InputError(path, field, "no face lines (\"f\"); expected a mesh of triangles or polygons");
 }
 
 // one face line: "n i1 .. in" with n >= 3 and every index below the vertex count
@@ -278,6 +299,7 @@ void CheckPly(const std::string& path, const std::string& field) {
   // header: the elements in order, their counts and record sizes
   while (std::getline(in, line)) {
     ++number;
+    RefuseControlCharacters(path, field, number, line);
     std::istringstream tokens(line);
     std::string keyword;
     tokens >> keyword;
@@ -326,13 +348,13 @@ void CheckPly(const std::string& path, const std::string& field) {
         return InputError(path, field, "PLY header counts " + std::to_string(e.count) + " " + e.name +
                                            " lines; the file ends after " + std::to_string(lines));
       };
-      if (!NextDataLine(in, false, &number, &line)) throw too_few(i);
+      if (!NextDataLine(in, false, &number, &line, path, field)) throw too_few(i);
       const std::string problem = AsciiRecordProblem(line, e, vertices);
       if (problem.empty()) continue;
       // a line that does not fit is most often the data ending before the counts: say that, if so
       const long at = number;
       std::uint64_t after = 0;
-      for (std::string rest; after + i + 1 < e.count && NextDataLine(in, false, &number, &rest);) ++after;
+      for (std::string rest; after + i + 1 < e.count && NextDataLine(in, false, &number, &rest, path, field);) ++after;
       if (after + i + 1 < e.count) throw too_few(i + 1 + after);
       throw InputError(path, field, At(at, line) + ": " + problem);
     }
@@ -344,13 +366,13 @@ void CheckOff(const std::string& path, const std::string& field) {
   std::string line;
   long number = 0;
   // "OFF" (maybe with the counts on the same line), then "vertices faces edges"
-  if (!NextDataLine(in, true, &number, &line)) throw InputError(path, field, "empty OFF file");
+  if (!NextDataLine(in, true, &number, &line, path, field)) throw InputError(path, field, "empty OFF file");
   std::istringstream head(line);
   std::string keyword, v, f;
   head >> keyword;
   if (keyword.find("OFF") == std::string::npos) throw InputError(path, field, At(number, line) + ": expected \"OFF\"");
   if (!(head >> v >> f)) {
-    if (!NextDataLine(in, true, &number, &line)) throw InputError(path, field, "OFF file has no counts line");
+    if (!NextDataLine(in, true, &number, &line, path, field)) throw InputError(path, field, "OFF file has no counts line");
     std::istringstream counts(line);
     counts >> v >> f;
   }
@@ -358,7 +380,7 @@ void CheckOff(const std::string& path, const std::string& field) {
     throw InputError(path, field, At(number, line) + ": expected the vertex and face counts");
   const std::uint64_t vertices = std::stoull(v), faces = std::stoull(f);
   for (std::uint64_t i = 0; i < vertices + faces; ++i) {
-    if (!NextDataLine(in, true, &number, &line))
+    if (!NextDataLine(in, true, &number, &line, path, field))
       throw InputError(path, field, "OFF header counts " + v + " vertices and " + f + " faces; the file ends after " +
                                         std::to_string(i) + " lines of them");
     if (i < vertices) continue;
@@ -387,6 +409,7 @@ void CheckAsciiStl(const std::string& path, const std::string& field) {
   std::string line;
   int corners = 0;
   for (long number = 1; std::getline(in, line); ++number) {
+    RefuseControlCharacters(path, field, number, line);
     std::istringstream tokens(line);
     std::string keyword;
     tokens >> keyword;

@@ -590,6 +590,18 @@ TEST_F(Trust, SingleOpenTriangleIsRefusedForADeformableBody) {
   EXPECT_TRUE(Has(panel.err, "must enclose a volume; this one (2 triangles, 4 open edges)")) << panel.err;
 }
 
+// a body stretched to 100 km by one stray vertex is refused for its size, by name (it was refused as
+// enclosing no volume: its volume against the stretched bounds)
+TEST_F(Trust, StrayVertexFarOffIsRefusedForTheBodySize) {
+  Write("stray.obj", "v 0 0 0\nv 4.5 0 0\nv 4.5 1.8 0\nv 0 1.8 0\nv 0 0 1.4\nv 100000 0 1.4\nv 4.5 1.8 1.4\nv 0 1.8 1.4\n"
+                     "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n");
+  Json j = BoxScenario();
+  j["bodies"][0]["mesh"] = {{"file", "stray.obj"}, {"unit", "m"}};
+  const ProcessResult r = Run(j);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "across at its largest; expected a physically possible body size")) << r.err;
+}
+
 TEST_F(Trust, DirectoryAndFifoAsMeshAreNamedAsSuch) {
   fs::create_directories(dir_ / "folder.obj");
   const ProcessResult dir = Run(WithCarMesh("folder.obj"));

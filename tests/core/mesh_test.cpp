@@ -379,6 +379,27 @@ TEST(MeshFiles, DroppedFacesAndReferencedFifosAreRefused) {
   EXPECT_EQ(LoadProblem(dir, "materials.obj", "mtllib pipe.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "");
 }
 
+// assimp ends a line at a CR or a form feed inside it, and a number at a NUL, where the checks read on:
+// it dropped "f 1 3<CR>2" as a face of two corners and aborted on a form feed in a PLY vertex line
+TEST(MeshFiles, ControlCharactersInsideALineAreRefused) {
+  const TempFolder dir;
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_EQ(LoadProblem(dir, "crlf.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"), "");  // CRLF endings read
+  EXPECT_EQ(LoadProblem(dir, "tab.obj", tri + "f\t1 2 3\n"), "");
+  EXPECT_NE(LoadProblem(dir, "cr.obj", tri + "f 1 3\r2\n").find("line 4 (\"f 1 3\\r2\"): a control character (byte 13) inside the line"),
+            std::string::npos);
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  EXPECT_NE(LoadProblem(dir, "ff.ply", ply + "0 0 0\n1 0\f 0\n0 1 0\n3 0 1 2\n").find("a control character (byte 12)"),
+            std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "nul.ply", ply + "0 0 0\n1 0 0\n0 1." + std::string(1, '\0') + "5 0\n3 0 1 2\n")
+                .find("a control character (byte 0)"), std::string::npos);
+  EXPECT_NE(LoadProblem(dir, "cr.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 2\r1\n").find("a control character (byte 13)"),
+            std::string::npos);
+  // a file of vertices only is refused by its own words (assimp's: "all meshes are orphaned")
+  EXPECT_NE(LoadProblem(dir, "points.obj", tri).find("no face lines (\"f\")"), std::string::npos);
+}
+
 // assimp's message on an unreadable file is quoted shortened (its STL reader quoted the rest of the file)
 TEST(MeshFiles, AssimpMessageIsQuotedShort) {
   const TempFolder dir;

@@ -293,8 +293,8 @@ TEST_F(ScenarioFiles, RefusesUnreadableMeshFile) {
 TEST_F(ScenarioFiles, RefusesMeshFilesWithoutUsableTriangles) {
   // parsing accepts an existing file; building the body models (as run and check do) refuses it
   const std::pair<const char*, const char*> cases[] = {
-      {"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "cannot read mesh file"},              // points only
-      {"v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "non-finite vertex"},     // overflowing coordinate
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no face lines (\"f\")"},              // points only
+      {"v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "not finite as assimp reads them"},  // overflowing coordinate
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e30 0 1\nf 1 2 3\nf 1 2 4\n", "extent 1e+30"},  // a stray vertex
   };
   for (const auto& [text, reason] : cases) {
