@@ -68,6 +68,7 @@ std::string Quoted(std::string text) {
   return Printable(text);
 }
 
+// whether `text` holds any of `words`
 bool Mentions(const std::string& text, std::initializer_list<const char*> words) {
   return std::any_of(words.begin(), words.end(), [&](const char* w) { return text.find(w) != std::string::npos; });
 }
