@@ -6,7 +6,6 @@
 #include "assimp_read.h"
 #include "mesh_text_check.h"
 
-
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
