@@ -6,6 +6,7 @@
 #include <tbb/global_control.h>
 
 #include "dymesh/accel/embree_locator.h"
+#include "dymesh/core/byte_hash.h"
 #include "dymesh/core/contact_step.h"
 #include "dymesh/core/parallel.h"
 #include "locate_rates.h"
@@ -68,14 +69,13 @@ class RecordingLocator final : public Locator {
   mutable tbb::enumerable_thread_specific<std::vector<Segment>> segments_;
 };
 
-// FNV-1a over every body's current vertex positions, byte by byte (determinism: DESIGN asks the step
-// benchmark for a hash of the final state)
+// FNV-1a over every body's current vertex positions (determinism: DESIGN asks the step benchmark for a
+// hash of the final state)
 std::uint64_t FinalStateHash(const ContactEngine& engine) {
-  std::uint64_t hash = 1469598103934665603ull;
+  std::uint64_t hash = kFnv1aBasis;
   for (int i = 0; i < engine.body_count(); ++i) {
     const std::vector<Vec3>& vertices = engine.state(i).vertices;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(vertices.data());
-    for (std::size_t k = 0; k < vertices.size() * sizeof(Vec3); ++k) hash = (hash ^ bytes[k]) * 1099511628211ull;
+    hash = Fnv1a(vertices.data(), vertices.size() * sizeof(Vec3), hash);
   }
   return hash;
 }

@@ -17,6 +17,7 @@
 
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
+#include "dymesh/core/byte_hash.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/io/body_models.h"
 #include "dymesh/io/output_folder.h"
@@ -230,12 +231,6 @@ dymesh::Scenario ScenarioFromDesc(const dm_world_desc& d) {
   return s;
 }
 
-// FNV-1a over raw bytes
-void Mix(std::uint64_t* h, const void* data, std::size_t size) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) *h = (*h ^ p[i]) * 1099511628211ull;
-}
-
 }  // namespace
 
 extern "C" {
@@ -442,12 +437,12 @@ dm_status dm_world_state_hash(const dm_world* w, uint64_t* out) {
   return Guarded("dm_world_state_hash", [&] {
     NotNull(out, "out");
     const dymesh::ContactEngine& engine = Sim(w).engine();
-    std::uint64_t h = 1469598103934665603ull;
+    std::uint64_t h = dymesh::kFnv1aBasis;
     for (int i = 0; i < engine.body_count(); ++i) {
       const dymesh::BodyState& s = engine.state(i);
       const dm_body_state r = FromRigid(s.rigid);
-      Mix(&h, &r, sizeof r);
-      Mix(&h, s.vertices.data(), s.vertices.size() * sizeof(Vec3));
+      h = dymesh::Fnv1a(&r, sizeof r, h);
+      h = dymesh::Fnv1a(s.vertices.data(), s.vertices.size() * sizeof(Vec3), h);
     }
     *out = h;
   });

@@ -290,16 +290,31 @@ double SignedVolume(const TriMesh& mesh) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const Vec3 centre = 0.5 * (lo + hi);
+  return SignedVolumeAbout(mesh, 0.5 * (lo + hi));
+}
+
+double SignedVolumeAbout(const TriMesh& mesh, const Vec3& point) {
   // determinism: serial sum in triangle order
   double six_volume = 0.0;
   for (const auto& t : mesh.triangles) {
-    const Vec3 a = mesh.vertices[t[0]] - centre;
-    const Vec3 b = mesh.vertices[t[1]] - centre;
-    const Vec3 c = mesh.vertices[t[2]] - centre;
+    const Vec3 a = mesh.vertices[t[0]] - point;
+    const Vec3 b = mesh.vertices[t[1]] - point;
+    const Vec3 c = mesh.vertices[t[2]] - point;
     six_volume += a.dot(b.cross(c));
   }
   return six_volume / 6.0;
+}
+
+Vec3 SurfaceCentroid(const TriMesh& mesh) {
+  Vec3 weighted = Vec3::Zero();
+  double area = 0.0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const double twice = TriangleCross(a, b, c).norm();
+    weighted += twice * (a + b + c);
+    area += 3.0 * twice;
+  }
+  return area > 0.0 ? Vec3(weighted / area) : Vec3::Zero();
 }
 
 void FlipWinding(TriMesh* mesh) {

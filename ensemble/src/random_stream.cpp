@@ -2,13 +2,11 @@
 
 #include <Random123/philox.h>
 
+#include "dymesh/core/byte_hash.h"
+
 namespace dymesh::ensemble {
 
-std::uint64_t TextHash(const std::string& text) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
+std::uint64_t TextHash(const std::string& text) { return Fnv1a(text.data(), text.size()); }
 
 double Uniform(std::uint64_t seed, std::uint64_t stream, std::uint64_t sample, std::uint32_t draw) {
   // key: the seed; counter: the stream (input), the sample and the draw

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <string>
 
-#include "dymesh/core/geometry.h"
 #include "dymesh/core/run_start.h"
 #include "dymesh/io/mesh_import.h"
 
@@ -23,33 +22,17 @@ Mat3 BoxInertia(double mass, const Vec3& size) {
 // "1 triangle", "3 triangles"
 std::string Count(int n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 
-// signed volume about the surface's area-weighted centroid: a closed mesh's volume, and none for a flat
-// sheet however it is turned (about the bounds centre, which a tilted sheet need not pass through, a
-// single tilted triangle enclosed a tetrahedron and was taken)
-double VolumeAboutSurfaceCentroid(const TriMesh& mesh) {
-  Vec3 weighted = Vec3::Zero();
-  double area = 0.0;
-  for (const auto& t : mesh.triangles) {
-    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-    const double twice = TriangleCross(a, b, c).norm();
-    weighted += twice * (a + b + c);
-    area += 3.0 * twice;
-  }
-  if (area <= 0.0) return 0.0;
-  const Vec3 centre = weighted / area;
-  double six_volume = 0.0;
-  for (const auto& t : mesh.triangles)
-    six_volume += (mesh.vertices[t[0]] - centre).dot((mesh.vertices[t[1]] - centre).cross(mesh.vertices[t[2]] - centre));
-  return six_volume / 6.0;
-}
-
 // a deformable body crushes into a volume: a sheet (one triangle, a flat panel) has none
 void RefuseFlatMesh(const TriMesh& mesh, const MeshStats& stats, const std::string& file, const std::string& field) {
   // a body of an impossible size is refused for that, by name (a vertex 100 km off stretched the bounds)
   const double extent = (stats.max - stats.min).maxCoeff();
   if (extent < kBodySizeRange.hard_lo || extent > kBodySizeRange.hard_hi) return;
   const double diagonal = (stats.max - stats.min).norm();
-  if (std::abs(VolumeAboutSurfaceCentroid(mesh)) > kMinEnclosedVolume * diagonal * diagonal * diagonal) return;
+  // about the surface's centroid: a closed mesh's volume, none for a flat sheet however it is turned
+  // (about the bounds centre, which a tilted sheet need not pass through, a single tilted triangle
+  // enclosed a tetrahedron and was taken)
+  const double volume = SignedVolumeAbout(mesh, SurfaceCentroid(mesh));
+  if (std::abs(volume) > kMinEnclosedVolume * diagonal * diagonal * diagonal) return;
   throw InputError(file, field,
                    "a deformable body's mesh must enclose a volume; this one (" + Count(stats.triangles, "triangle") +
                        ", " + Count(stats.open_edges, "open edge") +

@@ -195,6 +195,21 @@ TEST(BuildVertexTriangles, CsrListsEveryUse) {
   }
 }
 
+// a closed mesh's volume is the same about any point; a flat sheet, turned out of every axis plane,
+// has none about its surface centroid but some about its bounds centre (off its plane)
+TEST(SignedVolumeAbout, AnyPointForClosedMeshesTheCentroidForSheets) {
+  const TriMesh box = MakeBox(2.0, 3.0, 4.0, 2, 3, 4);
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(10, -5, 3), SurfaceCentroid(box)})
+    EXPECT_NEAR(SignedVolumeAbout(box, p), 24.0, 1e-12) << p.transpose();
+  TriMesh sheet;
+  sheet.vertices = {Vec3(0.535623, 0.854032, 0.972764), Vec3(0.590014, 0.765874, 0.851068),
+                    Vec3(0.524485, 0.787274, 0.978955)};
+  sheet.triangles = {{0, 1, 2}};
+  const double size = 0.17;  // the triangle's bounds diagonal, about: round-off is near 1e-16 of size cubed
+  EXPECT_LT(std::abs(SignedVolumeAbout(sheet, SurfaceCentroid(sheet))), 1e-15 * size * size * size);
+  EXPECT_GT(std::abs(SignedVolume(sheet)), 1e-6 * size * size * size);  // the old test's reading
+}
+
 TEST(FlipWinding, NegatesVolume) {
   TriMesh box = MakeBox(1.0, 2.0, 3.0, 1, 1, 1);
   FlipWinding(&box);
@@ -407,6 +422,7 @@ TEST(MeshFiles, AssimpMessageIsQuotedShort) {
   for (int i = 0; i < 50; ++i) stl += "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
   const std::string problem = LoadProblem(dir, "bad.stl", stl + "endsolid t\n");
   EXPECT_NE(problem.find("cannot read mesh file: "), std::string::npos) << problem;
+  // 200 characters quoted, plus the file's path (a temporary folder), the field and the prefix
   EXPECT_LT(problem.size(), 400u) << problem;
 }
 

@@ -3,7 +3,6 @@
 
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <utility>
 
 #include <tbb/global_control.h>
@@ -13,6 +12,7 @@
 #include "dymesh/io/body_models.h"
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
+#include "dymesh/core/byte_hash.h"
 #include "dymesh/core/simulation.h"
 #include "test_scenarios.h"
 
@@ -24,18 +24,14 @@ namespace u = units;
 // FNV-1a over the bytes of every double of the final state (poses, velocities, vertices, crush)
 class StateHash {
  public:
-  void Add(double x) {
-    unsigned char bytes[sizeof(double)];
-    std::memcpy(bytes, &x, sizeof(double));
-    for (unsigned char b : bytes) hash_ = (hash_ ^ b) * 1099511628211ull;
-  }
+  void Add(double x) { hash_ = Fnv1a(&x, sizeof x, hash_); }
   void Add(const Vec3& v) {
     for (int k = 0; k < 3; ++k) Add(v[k]);
   }
   std::uint64_t value() const { return hash_; }
 
  private:
-  std::uint64_t hash_ = 1469598103934665603ull;
+  std::uint64_t hash_ = kFnv1aBasis;
 };
 
 std::uint64_t HashFinalState(const Simulation& sim) {

@@ -60,8 +60,16 @@ int CylinderRows(double radius, double height, int segments);
 /// given, receives the first repeat and the triangle it repeats.
 int CountDuplicateFaces(const TriMesh& mesh, std::array<int, 2>* first = nullptr);
 
-/// Signed volume (positive when triangles wind outward on a closed mesh).
+/// Signed volume (positive when triangles wind outward on a closed mesh), about the bounds centre.
 double SignedVolume(const TriMesh& mesh);
+
+/// Signed volume of the cones from `point` to every triangle: a closed mesh's volume wherever the point
+/// is; for an open one it depends on the point (none for a flat sheet about a point on its plane).
+double SignedVolumeAbout(const TriMesh& mesh, const Vec3& point);
+
+/// Area-weighted mean of the triangles' centres (the origin for a mesh of no area): on the plane of a
+/// flat sheet, however it is turned.
+Vec3 SurfaceCentroid(const TriMesh& mesh);
 
 /// Reverses every triangle's winding (used when a closed mesh is wound inward).
 void FlipWinding(TriMesh* mesh);
