@@ -17,6 +17,11 @@ namespace dymesh::cli {
 inline constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitWarnings = 3, kExitEndedInContact = 4,
                      kExitFailedNumerics = 5, kExitFolderBusy = 6, kExitInterrupted = 130;
 
+/// Reports the exception being handled on stderr ("error: ...") and returns its exit code: refused
+/// input kExitBadInput, an output folder in use kExitFolderBusy, anything else kExitFailure. Call
+/// only inside a catch block.
+int ReportFailure();
+
 /// What `dymesh run` was asked to do.
 struct RunRequest {
   std::string scenario_path;

@@ -57,7 +57,8 @@ ensemble::RunCounts RunOnRanks(const ensemble::Spec& spec, const ensemble::RunOp
     try {
       counts = ensemble::RunEnsembleMpi(spec, options, rank, size);
     } catch (...) {
-      MPI_Abort(MPI_COMM_WORLD, kExitFailure);
+      // the message and exit code a serial run gives (the other ranks may wait on this one: all stop)
+      MPI_Abort(MPI_COMM_WORLD, ReportFailure());
     }
     MPI_Finalize();
     return counts;

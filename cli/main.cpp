@@ -76,15 +76,8 @@ template <typename F>
 int Guarded(F&& command) {
   try {
     return command();
-  } catch (const dymesh::InputError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return dymesh::cli::kExitBadInput;
-  } catch (const dymesh::OutputFolderBusy& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return dymesh::cli::kExitFolderBusy;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return dymesh::cli::kExitFailure;
+  } catch (...) {
+    return dymesh::cli::ReportFailure();
   }
 }
 

@@ -6,7 +6,9 @@
 #include <pybind11/stl.h>
 #include <tbb/global_control.h>
 
+#include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -114,6 +116,31 @@ struct Body {
   const dymesh::Simulation& sim() const { return run.cast<const Run&>().sim(); }
 };
 
+// a finished run takes no more steps (the C ABI's DM_ERROR_STATE)
+void RequireRunning(const Run& run) {
+  if (run.sim().finished()) throw std::logic_error("the run is finished (at " + std::to_string(run.sim().time()) + " s)");
+}
+
+// a Python str may hold a NUL, which a file name cannot: the path would be cut short at it
+void RefuseNul(const std::string& path, const char* argument) {
+  if (path.find('\0') != std::string::npos)
+    throw std::invalid_argument(std::string(argument) + ": a file name cannot hold a NUL character");
+}
+
+// a non-finite float in a scenario dict, named by its path (json.dumps writes it as NaN or
+// Infinity, which the JSON reader refuses only by byte offset)
+void RefuseNonFinite(const py::handle& value, const std::string& path, const std::string& file) {
+  if (py::isinstance<py::float_>(value) && !std::isfinite(value.cast<double>()))
+    throw dymesh::InputError(file, path, "expected a finite number, got " + py::str(value).cast<std::string>());
+  if (py::isinstance<py::dict>(value))
+    for (const auto& item : value.cast<py::dict>())
+      RefuseNonFinite(item.second, (path.empty() ? "" : path + ".") + py::str(item.first).cast<std::string>(), file);
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    std::size_t i = 0;
+    for (const auto& item : value) RefuseNonFinite(item, path + "[" + std::to_string(i++) + "]", file);
+  }
+}
+
 int CheckedIndex(const Run& run, int index) {
   const int n = run.sim().engine().body_count();
   if (index < 0 || index >= n) throw py::index_error("body " + std::to_string(index) + " is out of range 0.." + std::to_string(n - 1));
@@ -125,16 +152,27 @@ int CheckedIndex(const Run& run, int index) {
 PYBIND11_MODULE(dymesh, m) {
   m.doc() = "DyMESH mesh-based vehicle collision engine: scenario runs and the force-provider loop";
   static py::exception<dymesh::InputError> input_error(m, "InputError", PyExc_ValueError);
+  // a call that does not fit the run's state (stepping a finished run, mixing its own steps with
+  // host steps), as the C ABI's DM_ERROR_STATE
+  static py::exception<std::logic_error> state_error(m, "StateError", PyExc_RuntimeError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const dymesh::InputError& e) {
       input_error(e.what());
+    } catch (const std::invalid_argument&) {
+      throw;  // ValueError (pybind11's own translation)
+    } catch (const std::out_of_range&) {
+      throw;  // IndexError
+    } catch (const std::length_error&) {
+      throw;  // ValueError
+    } catch (const std::logic_error& e) {
+      state_error(e.what());
     }
   });
 
   m.def("set_threads", [](int threads) {
-    if (threads < 0) throw std::invalid_argument("threads: expected 0 (all cores) or more");
+    if (threads < 0 || threads > 4096) throw std::invalid_argument("threads: expected 0 (all cores) .. 4096");
     thread_limit.reset();
     if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   }, py::arg("threads"), "Limits the worker threads (0: all cores); results do not depend on it.");
@@ -166,10 +204,13 @@ PYBIND11_MODULE(dymesh, m) {
                              "Permanent deformation Delta per vertex, body frame [m]: a read-only view.");
 
   py::class_<Run>(m, "Run", "A scenario run: world mode (run, step) or force-provider mode (host_step).")
-      .def("run", [](py::object self) { self.cast<Run&>().sim().Run(); return self; },
-           "Runs to the end (duration or separation); returns the run.")
-      .def("step", [](Run& r) { if (!r.sim().finished()) r.sim().Advance(); return r.sim().finished(); },
-           "One step; True once the run has ended.")
+      .def("run", [](py::object self) {
+             RequireRunning(self.cast<const Run&>());
+             self.cast<Run&>().sim().Run();
+             return self;
+           }, "Runs to the end (duration or separation); returns the run. StateError for a finished or host-driven run.")
+      .def("step", [](Run& r) { RequireRunning(r); r.sim().Advance(); return r.sim().finished(); },
+           "One step; True once the run has ended. StateError for a finished or host-driven run.")
       .def_property_readonly("time", [](const Run& r) { return r.sim().time(); })
       .def_property_readonly("finished", [](const Run& r) { return r.sim().finished(); })
       .def_property_readonly("status", [](const Run& r) { return std::string(dymesh::RunStatusName(dymesh::Summarize(r.sim()).status)); })
@@ -191,20 +232,26 @@ PYBIND11_MODULE(dymesh, m) {
         r.sim().FinishHostRun(r.ToStates(states));
       }, py::arg("states"), "Ends a host-driven run with the states reached after the last step.")
       .def("write_outputs", [](const Run& r, const std::string& dir) {
+        RefuseNul(dir, "dir");
         dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(r.sim().scenario()), dymesh::InputFiles(r.sim().scenario()));
         folder.ReplacePreviousRun();
         dymesh::WriteOutputs(r.sim(), dymesh::Summarize(r.sim()), dir);
       }, py::arg("dir"), "Writes meshes, history.csv, report.html and summary.json into `dir`.");
 
-  m.def("load_scenario", [](const std::string& path) { return std::make_unique<Run>(dymesh::LoadScenario(path)); },
+  m.def("load_scenario", [](const std::string& path) {
+          RefuseNul(path, "path");
+          return std::make_unique<Run>(dymesh::LoadScenario(path));
+        },
         py::arg("path"), "Loads and validates a scenario file and its meshes; returns a Run.");
   m.def("scenario", [](const py::object& scenario, const std::string& base_dir) {
           // a dict is the scenario file's JSON; a str its text. Relative mesh and vehicle paths resolve
           // against base_dir; errors name the field as for a file
+          const std::string file = base_dir + "/(python scenario)";
+          if (!py::isinstance<py::str>(scenario)) RefuseNonFinite(scenario, "", file);
           const std::string text = py::isinstance<py::str>(scenario)
                                        ? scenario.cast<std::string>()
                                        : py::module_::import("json").attr("dumps")(scenario).cast<std::string>();
-          return std::make_unique<Run>(dymesh::ParseScenario(text, base_dir + "/(python scenario)"));
+          return std::make_unique<Run>(dymesh::ParseScenario(text, file));
         },
         py::arg("scenario"), py::arg("base_dir") = ".",
         "Builds a Run from a scenario given as a dict (or JSON text), laid out as a scenario file: bodies, "

@@ -4,9 +4,7 @@
 
 #include <tbb/global_control.h>
 
-#include <algorithm>
-#include <cmath>
-#include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -18,32 +16,36 @@
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
 #include "dymesh/core/byte_hash.h"
+#include "dymesh/core/physical_ranges.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/io/body_models.h"
 #include "dymesh/io/output_folder.h"
 #include "dymesh/io/scenario_json.h"
 #include "dymesh/io/summary_json.h"
 #include "dymesh/report/output_files.h"
+#include "argument_checks.h"
+#include "world_from_arrays.h"
 
 struct dm_world {
   std::unique_ptr<dymesh::Simulation> sim;
-  std::string summary_text;  // the last summary handed out as a view
+  // views stay valid until the world changes: the summary handed out is made again only after a
+  // step, a run or a host step (counted by revision)
+  std::string summary_text;
+  std::uint64_t revision = 0, summary_revision = 0;
 };
 
 namespace {
 
 using dymesh::RigidState;
 using dymesh::Vec3;
+using dymesh::api::NotNull;
+using dymesh::api::Require;
+using dymesh::api::ToRigid;
 
 thread_local std::string last_error;
 
 std::mutex threads_mutex;
 std::unique_ptr<tbb::global_control> thread_limit;
-
-// a refused argument: the status and the message for dm_last_error
-struct ArgumentError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
 
 dm_status Fail(dm_status status, const std::string& message) {
   last_error = message;
@@ -76,15 +78,6 @@ dm_status Guarded(const char* function, F&& body) {
 
 // ---- argument checks --------------------------------------------------------------------------
 
-void Require(bool ok, const std::string& what) {
-  if (!ok) throw ArgumentError(what);
-}
-
-template <typename T>
-void NotNull(const T* p, const char* name) {
-  Require(p != nullptr, std::string(name) + " is null");
-}
-
 const dymesh::Simulation& Sim(const dm_world* w) {
   NotNull(w, "world");
   return *w->sim;
@@ -93,24 +86,6 @@ const dymesh::Simulation& Sim(const dm_world* w) {
 void BodyIndex(const dm_world* w, int32_t body) {
   const int n = Sim(w).engine().body_count();
   Require(body >= 0 && body < n, "body " + std::to_string(body) + " is out of range 0.." + std::to_string(n - 1));
-}
-
-bool Finite(const double* v, int n) {
-  for (int i = 0; i < n; ++i)
-    if (!std::isfinite(v[i])) return false;
-  return true;
-}
-
-RigidState ToRigid(const dm_body_state& s, int body) {
-  Require(Finite(s.position, 3) && Finite(s.velocity, 3) && Finite(s.omega, 3) &&
-              std::isfinite(s.roll) && std::isfinite(s.pitch) && std::isfinite(s.yaw),
-          "state of body " + std::to_string(body) + " is not finite");
-  RigidState r;
-  r.position = Vec3(s.position[0], s.position[1], s.position[2]);
-  r.roll = s.roll, r.pitch = s.pitch, r.yaw = s.yaw;
-  r.velocity = Vec3(s.velocity[0], s.velocity[1], s.velocity[2]);
-  r.omega = Vec3(s.omega[0], s.omega[1], s.omega[2]);
-  return r;
 }
 
 dm_body_state FromRigid(const RigidState& r) {
@@ -133,102 +108,13 @@ std::vector<RigidState> States(const dm_world* w, const dm_body_state* states, i
   return out;
 }
 
+// a finished run takes no more steps (DM_ERROR_STATE)
+void RequireRunning(const dm_world& w) {
+  if (w.sim->finished()) throw std::logic_error("the run is finished (at " + std::to_string(w.sim->time()) + " s)");
+}
+
 dymesh::LocatorFactory Locators() {
   return dymesh::accel::MakeEmbreeLocatorFactory(std::make_shared<const dymesh::accel::EmbreeDevice>());
-}
-
-// ---- worlds from arrays -----------------------------------------------------------------------
-
-// bytes of dm_body_desc before the fields appended since the first ABI (a caller built with that
-// header passes this struct_size)
-constexpr size_t kBodyDescFirstSize = offsetof(dm_body_desc, motion);
-
-// body i of the caller's array, whose elements are struct_size bytes apart; fields the caller's
-// header did not have read as 0 (their defaults), fields of a newer header are not read
-dm_body_desc BodyDescAt(const dm_body_desc* bodies, int i) {
-  size_t stride = 0;
-  std::memcpy(&stride, bodies, sizeof stride);
-  Require(stride >= kBodyDescFirstSize, "bodies[0].struct_size: expected sizeof(dm_body_desc)");
-  const auto* element = reinterpret_cast<const unsigned char*>(bodies) + static_cast<size_t>(i) * stride;
-  dm_body_desc d;
-  std::memset(&d, 0, sizeof d);
-  std::memcpy(&d, element, std::min(stride, sizeof d));
-  const std::string at = "bodies[" + std::to_string(i) + "]";
-  Require(d.struct_size == stride, at + ".struct_size: expected the same size as bodies[0]'s");
-  return d;
-}
-
-// the motion model of a description (a fixed body takes only the default)
-dymesh::MotionModel MotionFromDesc(const dm_body_desc& d, const std::string& at) {
-  const bool fixed = d.fixed != 0;
-  Require(d.motion >= DM_MOTION_DEFAULT && d.motion <= DM_MOTION_GRAVITY,
-          at + ".motion: expected a dm_motion: DM_MOTION_DEFAULT, _PLANAR, _FREE or _GRAVITY (0-3), got " +
-              std::to_string(d.motion));
-  Require(!fixed || d.motion == DM_MOTION_DEFAULT, at + ".motion: a fixed body takes DM_MOTION_DEFAULT");
-  switch (d.motion) {
-    case DM_MOTION_FREE: return dymesh::MotionModel::kFree6Dof;
-    case DM_MOTION_GRAVITY: return dymesh::MotionModel::kGravityGround;
-    case DM_MOTION_PLANAR: return dymesh::MotionModel::kPlanar;
-    default: return fixed ? dymesh::MotionModel::kFixed : dymesh::MotionModel::kPlanar;
-  }
-}
-
-// one body's model and scenario entry from its description
-std::shared_ptr<const dymesh::BodyModel> BodyFromDesc(const dm_body_desc& d, int i, dymesh::BodySpec* spec) {
-  const std::string at = "bodies[" + std::to_string(i) + "]";
-  Require(d.name != nullptr && d.name[0] != '\0', at + ".name: expected a non-empty name");
-  NotNull(d.vertices, (at + ".vertices").c_str());
-  NotNull(d.triangles, (at + ".triangles").c_str());
-  Require(d.vertex_count >= 3 && d.triangle_count >= 1, at + ": expected at least 3 vertices and 1 triangle");
-  Require(Finite(d.vertices, 3 * d.vertex_count), at + ".vertices: not finite");
-  dymesh::TriMesh mesh;
-  for (int v = 0; v < d.vertex_count; ++v)
-    mesh.vertices.emplace_back(d.vertices[3 * v], d.vertices[3 * v + 1], d.vertices[3 * v + 2]);
-  for (int t = 0; t < d.triangle_count; ++t) {
-    std::array<int, 3> tri{d.triangles[3 * t], d.triangles[3 * t + 1], d.triangles[3 * t + 2]};
-    for (int k : tri) Require(k >= 0 && k < d.vertex_count, at + ".triangles: vertex index out of range");
-    mesh.triangles.push_back(tri);
-  }
-  const bool fixed = d.fixed != 0, rigid = d.rigid != 0;
-  Require(fixed || (std::isfinite(d.mass) && d.mass > 0.0), at + ".mass: expected a finite mass > 0");
-  Require(fixed || (Finite(d.inertia, 3) && d.inertia[0] > 0 && d.inertia[1] > 0 && d.inertia[2] > 0),
-          at + ".inertia: expected three finite values > 0");
-  Require(std::isfinite(d.stiffness_a) && std::isfinite(d.stiffness_b) && d.stiffness_a >= 0 && d.stiffness_b >= 0,
-          at + ".stiffness: expected finite A, B >= 0");
-  Require(rigid || d.stiffness_a > 0 || d.stiffness_b > 0, at + ".stiffness: a deformable body needs A > 0 or B > 0");
-  Require(d.restitution >= 0 && d.restitution <= 1, at + ".restitution: expected a value in [0, 1]");
-  Require(std::isfinite(d.friction) && d.friction >= 0, at + ".friction: expected a finite value >= 0");
-  // the scenario entry and the model
-  std::array<dymesh::Stiffness, dymesh::kBodySurfaceCount> k;
-  dymesh::Stiffness s;
-  s.A = d.stiffness_a, s.B = d.stiffness_b;
-  k.fill(s);
-  spec->name = d.name;
-  spec->mass = fixed ? 0.0 : d.mass;
-  spec->rigid = rigid;
-  spec->motion = MotionFromDesc(d, at);
-  spec->restitution = d.restitution, spec->friction = d.friction;
-  spec->stiffness = k;
-  spec->initial = ToRigid(d.initial, i);
-  const dymesh::Mat3 inertia = fixed ? dymesh::Mat3::Identity() : dymesh::Vec3(d.inertia[0], d.inertia[1], d.inertia[2]).asDiagonal().toDenseMatrix();
-  return std::make_shared<const dymesh::BodyModel>(
-      dymesh::MakeBodyModel(d.name, std::move(mesh), k, spec->mass, inertia, d.restitution, d.friction, rigid));
-}
-
-// the scenario part of a world description
-dymesh::Scenario ScenarioFromDesc(const dm_world_desc& d) {
-  Require(d.struct_size >= sizeof(dm_world_desc), "world.struct_size: expected sizeof(dm_world_desc)");
-  Require(std::isfinite(d.time_step) && d.time_step > 0, "world.time_step: expected a finite step > 0");
-  Require(std::isfinite(d.duration) && d.duration >= d.time_step, "world.duration: expected a duration >= the step");
-  Require(d.passes_per_step >= 0 && d.passes_per_step <= 1000, "world.passes_per_step: expected 0..1000");
-  dymesh::Scenario s;
-  s.file = "(dm_world_create)";
-  s.units = dymesh::UnitSystem::kSI;
-  s.time_step = d.time_step;
-  s.duration = d.duration;
-  s.stop_at_separation = d.stop_at_separation != 0;
-  if (d.passes_per_step > 0) s.contact.passes_per_step = d.passes_per_step;
-  return s;
 }
 
 }  // namespace
@@ -267,18 +153,9 @@ dm_status dm_world_create(const dm_world_desc* desc, const dm_body_desc* bodies,
     NotNull(bodies, "bodies");
     NotNull(out, "out");
     *out = nullptr;
-    Require(body_count >= 2, "body_count: expected at least 2 bodies, got " + std::to_string(body_count));
-    dymesh::Scenario scenario = ScenarioFromDesc(*desc);
-    std::vector<std::shared_ptr<const dymesh::BodyModel>> models;
-    scenario.bodies.resize(body_count);
-    bool any_deformable = false;
-    for (int i = 0; i < body_count; ++i) {
-      models.push_back(BodyFromDesc(BodyDescAt(bodies, i), i, &scenario.bodies[i]));
-      any_deformable = any_deformable || !scenario.bodies[i].rigid;
-    }
-    Require(any_deformable, "bodies: every body is rigid: at least one must be deformable");
+    dymesh::api::ArrayWorld built = dymesh::api::WorldFromArrays(*desc, bodies, body_count);
     auto world = std::make_unique<dm_world>();
-    world->sim = std::make_unique<dymesh::Simulation>(scenario, std::move(models), Locators());
+    world->sim = std::make_unique<dymesh::Simulation>(built.scenario, std::move(built.models), Locators());
     *out = world.release();
   });
 }
@@ -286,6 +163,8 @@ dm_status dm_world_create(const dm_world_desc* desc, const dm_body_desc* bodies,
 dm_status dm_world_run(dm_world* w) {
   return Guarded("dm_world_run", [&] {
     NotNull(w, "world");
+    RequireRunning(*w);
+    ++w->revision;
     w->sim->Run();
   });
 }
@@ -294,7 +173,10 @@ dm_status dm_world_step(dm_world* w, int32_t* finished) {
   return Guarded("dm_world_step", [&] {
     NotNull(w, "world");
     NotNull(finished, "finished");
-    if (!w->sim->finished()) w->sim->Advance();
+    *finished = w->sim->finished() ? 1 : 0;
+    RequireRunning(*w);
+    ++w->revision;
+    w->sim->Advance();
     *finished = w->sim->finished() ? 1 : 0;
   });
 }
@@ -402,7 +284,10 @@ dm_status dm_world_summary_json(dm_world* w, const char** out_text) {
     NotNull(w, "world");
     NotNull(out_text, "out_text");
     const dymesh::Simulation& sim = *w->sim;
-    w->summary_text = dymesh::SummaryJson(dymesh::Summarize(sim), sim.scenario(), dymesh::OutputFileNames(sim.scenario()));
+    if (w->summary_text.empty() || w->summary_revision != w->revision) {
+      w->summary_text = dymesh::SummaryJson(dymesh::Summarize(sim), sim.scenario(), dymesh::OutputFileNames(sim.scenario()));
+      w->summary_revision = w->revision;
+    }
     *out_text = w->summary_text.c_str();
   });
 }
@@ -454,7 +339,8 @@ dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t c
   return Guarded("dm_world_host_step", [&] {
     NotNull(w, "world");
     NotNull(out_loads, "out_loads");
-    Require(std::isfinite(dt) && dt > 0.0, "dt: expected a finite step > 0");
+    Require(dt > 0.0 && dt <= dymesh::kDurationRange.hard_hi, "dt: expected a step > 0 and at most 1e4 s");
+    ++w->revision;
     const dymesh::StepResult step = w->sim->HostStep(States(w, states, count), dt);
     for (int i = 0; i < count; ++i)
       for (int k = 0; k < 3; ++k) {
@@ -468,6 +354,7 @@ dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t c
 dm_status dm_world_host_finish(dm_world* w, const dm_body_state* states, int32_t count) {
   return Guarded("dm_world_host_finish", [&] {
     NotNull(w, "world");
+    ++w->revision;
     w->sim->FinishHostRun(States(w, states, count));
   });
 }

@@ -1,8 +1,12 @@
 #include "dymesh/core/placement.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include "segment_grid.h"
 
 namespace dymesh {
 namespace {
@@ -96,24 +100,47 @@ class ParallelRayGrid {
   std::vector<std::vector<int>> cells_;
 };
 
-// gap from `mover`'s vertices to `target`'s surface along earth direction d: the smallest entering
-// distance, or minus the deepest inside depth (distance back out) when a vertex is inside
+// the undirected edges of a mesh, each once
+std::vector<std::array<int, 2>> Edges(const TriMesh& mesh) {
+  std::vector<std::array<int, 2>> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const auto& tri : mesh.triangles)
+    for (int k = 0; k < 3; ++k) edges.push_back({std::min(tri[k], tri[(k + 1) % 3]), std::max(tri[k], tri[(k + 1) % 3])});
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+// gap from `mover`'s surface to `target`'s along earth direction d: the smallest entering distance
+// of its vertices, or minus the deepest inside depth (distance back out) of its vertices and of the
+// parts of its edges that pass through the target's surface (where no vertex of either body lies
+// inside the other, as a coarse box threaded on a wall: before, "gap 2.25 m" and a run through it)
 double DirectedGap(const PosedBody& mover, const PosedBody& target, const Vec3& d, double length) {
   const ParallelRayGrid grid(target.model->mesh, target.rotation.transpose() * d);
   double gap = kNone, depth = 0.0;
-  for (const Vec3& vertex : mover.model->mesh.vertices) {
-    const Vec3 p = mover.pose->position + mover.rotation * vertex;
-    const Vec3 q = target.rotation.transpose() * (p - target.pose->position);
+  auto probe = [&](const Vec3& q) {
     const Crossing ahead = grid.First(q, true, length, -kNone);
-    if (ahead.t == kNone) continue;
+    if (ahead.t == kNone) return;
     if (ahead.entering) {
       gap = std::min(gap, ahead.t);
-      continue;
+      return;
     }
     // surface ahead turned away: inside when the surface behind is turned away too (a vertex on
     // the far face, as a box pushed exactly through a wall, looks past that face)
     const Crossing behind = grid.First(q, false, length, kSegmentSlack * (1.0 + length));
     if (behind.t != kNone && !behind.entering) depth = std::max(depth, behind.t);
+  };
+  // the mover's vertices in the target's frame
+  std::vector<Vec3> at;
+  at.reserve(mover.model->mesh.vertices.size());
+  for (const Vec3& vertex : mover.model->mesh.vertices)
+    at.push_back(target.rotation.transpose() * (mover.pose->position + mover.rotation * vertex - target.pose->position));
+  for (const Vec3& q : at) probe(q);
+  // an edge through the target's surface: the middle of each stretch between two crossings
+  const SegmentGrid surface(target.model->mesh);
+  for (const auto& e : Edges(mover.model->mesh)) {
+    const std::vector<double> s = surface.Crossings(at[e[0]], at[e[1]]);
+    for (std::size_t k = 0; k + 1 < s.size(); ++k) probe(at[e[0]] + 0.5 * (s[k] + s[k + 1]) * (at[e[1]] - at[e[0]]));
   }
   return depth > 0.0 ? -depth : gap;
 }

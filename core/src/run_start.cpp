@@ -29,7 +29,7 @@ std::string SizedBy(const Scenario& scenario, const MeshSource& mesh) {
 // a mesh file's body is as large as a generated box may be: refused outside the possible sizes,
 // warned outside those met in vehicle collisions (a unit or scale off by 1000 builds either)
 void CheckMeshFileSizes(Scenario* scenario, const std::vector<std::shared_ptr<const BodyModel>>& models) {
-  const BodySizeRange& r = kBodySizeRange;
+  const PhysicalRange& r = kBodySizeRange;
   auto range = [&](double lo, double hi) { return LengthText(scenario->units, lo) + " .. " + LengthText(scenario->units, hi); };
   for (std::size_t i = 0; i < models.size(); ++i) {
     const MeshSource& mesh = scenario->bodies[i].mesh;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "dymesh/core/physical_ranges.h"
+
 namespace dymesh {
 
 Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<const BodyModel>> models,
@@ -35,6 +37,8 @@ bool Simulation::Run(const std::function<bool(double)>& on_step) {
 
 bool Simulation::Advance() {
   if (finished_) return false;
+  // one run, one integrator: the host's steps and this one's would each miss the other's motion
+  if (host_driven_) throw std::logic_error("the run is host-driven (HostStep): it takes no step of its own");
   const double dt = scenario_.time_step;
   // contact step at the current poses, then the rigid-body host integrates every body
   const StepResult step = engine_->Step(dt);
@@ -121,7 +125,11 @@ bool Simulation::Integrate(const StepResult& step, double dt) {
 
 StepResult Simulation::HostStep(const std::vector<RigidState>& states, double dt) {
   if (finished_) throw std::logic_error("HostStep: the run is finished");
-  if (!(dt > 0.0) || !std::isfinite(dt)) throw std::invalid_argument("HostStep: dt must be finite and > 0");
+  if (steps_ > 0 && !host_driven_) throw std::logic_error("HostStep: the run was stepped by its own integrator");
+  host_driven_ = true;
+  // a step no longer than a run may last (README Physical ranges)
+  if (!(dt > 0.0 && dt <= kDurationRange.hard_hi))
+    throw std::invalid_argument("HostStep: dt must be finite and > 0, at most 1e4 s (a run's longest duration)");
   AcceptHostStates(states);
   // the contact step at the host's poses; the host integrates its loads
   StepResult step = engine_->Step(dt);
@@ -138,6 +146,7 @@ StepResult Simulation::HostStep(const std::vector<RigidState>& states, double dt
 
 void Simulation::FinishHostRun(const std::vector<RigidState>& states) {
   if (finished_) throw std::logic_error("FinishHostRun: the run is finished");
+  if (steps_ > 0 && !host_driven_) throw std::logic_error("FinishHostRun: the run was stepped by its own integrator");
   AcceptHostStates(states);
   finished_ = true;
 }

@@ -36,10 +36,14 @@ void RefuseFlatMesh(const TriMesh& mesh, const MeshStats& stats, const std::stri
   throw InputError(file, field,
                    "a deformable body's mesh must enclose a volume; this one (" + Count(stats.triangles, "triangle") +
                        ", " + Count(stats.open_edges, "open edge") +
-                       ") encloses none: give a closed or shell mesh, or set \"rigid\": true");
+                       ") encloses none: give a closed or shell mesh, or make the body rigid (\"rigid\": true)");
 }
 
 }  // namespace
+
+void RefuseFlatMesh(const TriMesh& mesh, const std::string& file, const std::string& field) {
+  RefuseFlatMesh(mesh, ComputeStats(mesh), file, field);
+}
 
 std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario) {
   return BuildBodyModels(scenario, [&](const MeshSource& source, const std::string& field) {

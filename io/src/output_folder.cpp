@@ -13,6 +13,7 @@
 #include <set>
 
 #include "dymesh/io/atomic_file.h"
+#include "dymesh/io/printable.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/io/scenario_json.h"
 
@@ -175,6 +176,9 @@ void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& out
 OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs, std::vector<std::string> inputs)
     : dir_(dir), outputs_(std::move(outputs)), inputs_(std::move(inputs)) {
   if (dir_.empty()) throw InputError("command line", "--out", "expected a folder name, got \"\"");
+  // a library caller's string may hold a NUL, which would cut the path short
+  if (dir_.find('\0') != std::string::npos)
+    throw InputError("command line", "--out", "expected a folder name without a NUL character, got \"" + Printable(dir_) + "\"");
   created_ = EnsureFolder(dir_);
   try {
     TakeFolder();

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <utility>
 
+#include "dymesh/core/physical_ranges.h"
 #include "dymesh/core/run_start.h"
 #include "dymesh/core/units.h"
 #include "json_path.h"
@@ -30,7 +31,6 @@ using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kMaxSteps = 1e7;                          // most steps a scenario may ask for
 constexpr double kDefaultConversionHeight = 30.0 * units::kInch;  // [m] CRUSH_HEIGHT (spec §4)
 
 // ---------------------------------------------------------------------------------------------
@@ -228,11 +228,6 @@ Vec3 ReadVec3(const Source& src, const Json& j, const std::string& path, const R
 // refused; beyond the plausible ones it is accepted with a warning naming the field. Bounds are
 // SI; messages show them in the file's units.
 
-struct PhysicalRange {
-  double hard_lo, hard_hi, lo, hi;
-  const char* what;  // the quantity, for messages
-};
-
 // a unit of the file for messages: SI per unit and its name
 struct InputUnit {
   double per_unit;
@@ -268,28 +263,9 @@ void CheckPhysical(const Source& src, const std::string& field, double si, const
                              ": check the value and its unit"});
 }
 
-constexpr double kSpeedOfSound = 343.0;  // [m/s]
-constexpr PhysicalRange kSpeedRange{-kSpeedOfSound, kSpeedOfSound, -67.0, 67.0, "speed"};  // plausible: 150 mph
-constexpr PhysicalRange kYawRateRange{-36000.0, 36000.0, -720.0, 720.0, "yaw rate [deg/s]"};
-constexpr PhysicalRange kHeadingRange{-720.0, 720.0, -360.0, 360.0, "heading [deg]"};
-constexpr PhysicalRange kTiltRange{-180.0, 180.0, -45.0, 45.0, "roll or pitch [deg]"};
-constexpr PhysicalRange kMassRange{1.0, 1e7, 50.0, 60000.0, "mass"};
-constexpr PhysicalRange kPositionRange{-1e5, 1e5, -1e4, 1e4, "position coordinate"};  // [m]
-constexpr PhysicalRange kCgRange{-100.0, 100.0, -20.0, 20.0, "CG coordinate"};        // [m] from the mesh origin
+// a generated box's sizes, as a mesh file's built extent (CheckRunStart)
 constexpr PhysicalRange kBoxRange{kBodySizeRange.hard_lo, kBodySizeRange.hard_hi, kBodySizeRange.lo, kBodySizeRange.hi,
-                                  "box size"};  // [m], as a mesh file's built extent (CheckRunStart)
-constexpr PhysicalRange kGyrationRange{0.01, 100.0, 0.1, 15.0, "radius of gyration sqrt(inertia / mass)"};  // [m]
-constexpr PhysicalRange kFrictionRange{0.0, 10.0, 0.0, 1.5, "friction coefficient"};
-constexpr PhysicalRange kDurationRange{0.0, 1e4, 0.0, 10.0, "duration [s]"};
-constexpr PhysicalRange kGapRange{0.0, 1e3, 0.0, 10.0, "gap"};  // [m] between bodies placed at contact
-// 3-D stiffness (SI): published A up to ~1000 lb/in and B up to ~1000 lb/in^2 over a 30 in
-// conversion height are ~2.3e5 N/m^2 and ~9e6 N/m^3; rigid-wall stand-ins go higher
-constexpr PhysicalRange kStiffnessARange{0.0, 1e15, 0.0, 1e7, "3-D stiffness A [N/m^2]"};
-constexpr PhysicalRange kStiffnessBRange{0.0, 1e15, 0.0, 1e9, "3-D stiffness B [N/m^3]"};
-// the rebound slope Ku: steeper than loading, within the same order of reach
-constexpr PhysicalRange kUnloadSlopeRange{0.0, 1e16, 0.0, 1e10, "unloading slope Kv [N/m^3]"};
-// 2-D coefficients are spread over a height of structure: CRASH3 uses 10-40 in
-constexpr PhysicalRange kConversionHeightRange{0.01, 10.0, 0.1, 2.0, "conversion height"};  // [m]
+                                  "box size"};
 
 // a name a file can have: not empty, no NUL (a path would be cut short at it)
 bool IsFileName(const std::string& name) { return !name.empty() && name.find('\0') == std::string::npos; }
@@ -782,9 +758,7 @@ BodySpec ParseBody(const Source& src, const Json& j, const std::string& path) {
   body.name = ReadString(src, Require(src, j, path, "name"), Join(path, "name"));
   if (body.name.empty()) Fail(src, Join(path, "name"), "expected a non-empty string, got \"\"");
   // the name becomes output file names (NAME_deformed.obj, ...)
-  if (HasControlCharacter(body.name) || body.name.find_first_of("/\\") != std::string::npos || body.name == "." || body.name == "..")
-    Fail(src, Join(path, "name"),
-         "expected a name usable in file names (no /, \\ or control characters, DEL and U+0080..U+009F included), got " + Describe(j["name"]));
+  if (!UsableInFileNames(body.name)) Fail(src, Join(path, "name"), std::string("expected ") + kFileNameRule + ", got " + Describe(j["name"]));
   // vehicle file first, then this body's own fields
   BodyFields fields;
   if (const Json* v = Find(j, "vehicle")) fields = LoadVehicle(src, *v, Join(path, "vehicle"), &body.vehicle_file);
@@ -907,6 +881,8 @@ std::vector<std::string> InputFiles(const Scenario& scenario) {
 }
 
 Scenario LoadScenario(const std::string& path) {
+  // a library caller's string may hold a NUL, which would cut the path short
+  if (!IsFileName(path)) throw InputError(Printable(path), "(file)", "expected a file name (not empty, no NUL character)");
   if (const std::string problem = NotARegularFile(path); !problem.empty())
     throw InputError(path, "(file)", problem + ": " + path);
   bool ok = false;

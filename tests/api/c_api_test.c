@@ -2,6 +2,7 @@
  * byte-identical to the command's summary.json, equal state hashes at 1, 2 and 4 threads), and
  * force-provider mode (bodies from arrays, a host integrating them with the loads it is given).
  * Usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR. Prints each failed check; exits 1 if any failed. */
+#define _POSIX_C_SOURCE 200809L /* strdup */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -185,10 +186,10 @@ static void test_force_provider(void) {
 }
 
 /* the final state of a box car coasting clear of a fixed wall (no contact), set off at 1 m/s along x,
-   0.2 m/s down and pitching at 0.5 rad/s; its description `struct_size` bytes long, with `motion` */
-static dm_body_state coast(size_t struct_size, int32_t motion) {
+   `down` m/s down and pitching at 0.5 rad/s; its description `struct_size` bytes long, with `motion` */
+static dm_body_state coast(size_t struct_size, int32_t motion, double down) {
   car_and_wall s;
-  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {1.0, 0, 0.2}, {0, 0.5, 0}}, 20.0, motion);
+  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {1.0, 0, down}, {0, 0.5, 0}}, 20.0, motion);
   /* an older caller's array: elements struct_size bytes apart */
   unsigned char packed[2 * sizeof(dm_body_desc)];
   for (int i = 0; i < 2; ++i) {
@@ -212,14 +213,15 @@ static dm_body_state coast(size_t struct_size, int32_t motion) {
 static void test_motion(void) {
   /* free, no loads: x, z and pitch all grow linearly, so z / x = 0.2 and pitch / x = 0.5 (1e-9:
      round-off of a constant-rate integration) */
-  const dm_body_state free6 = coast(sizeof(dm_body_desc), DM_MOTION_FREE);
+  const dm_body_state free6 = coast(sizeof(dm_body_desc), DM_MOTION_FREE, 0.2);
   CHECK(free6.position[0] > 0.09);
   CHECK(fabs(free6.position[2] / free6.position[0] - 0.2) < 1e-9);
   CHECK(fabs(free6.pitch / free6.position[0] - 0.5) < 1e-9);
   CHECK(fabs(free6.omega[1] - 0.5) < 1e-12);
-  /* planar (the default, and an older caller's struct whatever lies beyond it): height and pitch held */
-  const dm_body_state planar = coast(sizeof(dm_body_desc), DM_MOTION_DEFAULT);
-  const dm_body_state older = coast(offsetof(dm_body_desc, motion), DM_MOTION_FREE);
+  /* planar (the default, and an older caller's struct whatever lies beyond it): height and pitch held
+     (a vertical velocity is refused below) */
+  const dm_body_state planar = coast(sizeof(dm_body_desc), DM_MOTION_DEFAULT, 0.0);
+  const dm_body_state older = coast(offsetof(dm_body_desc, motion), DM_MOTION_FREE, 0.0);
   CHECK(planar.position[0] == free6.position[0]);
   CHECK(planar.position[2] == 0.0 && planar.pitch == 0.0 && planar.omega[1] == 0.0);
   CHECK(memcmp(&planar, &older, sizeof planar) == 0);
@@ -250,6 +252,108 @@ static void test_motion(void) {
   CHECK(w == NULL);
 }
 
+/* a world from arrays is held to a scenario file's checks (found by a fuzz of the C ABI, 2026-11-28:
+   each of these was accepted, or crashed) */
+static void test_create_checks(void) {
+  car_and_wall s;
+  const dm_body_state moving = {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}};
+  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world* w = NULL;
+  /* a struct_size far beyond any dm_body_desc was taken as the stride and read past the array */
+  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  s.bodies[0].struct_size = s.bodies[1].struct_size = (size_t)1 << 40;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].struct_size"));
+  /* names become output file names: a path or a name used twice would write outside or overwrite */
+  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  s.bodies[0].name = "../escaped";
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].name: expected a name usable in file names"));
+  s.bodies[0].name = "wall";
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[1].name: duplicate body name \"wall\""));
+  /* a planar body's vertical velocity would be dropped */
+  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 5.0}, {0, 0, 0}}, 2.76, DM_MOTION_PLANAR);
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].initial.velocity[2]: a planar body holds its height"));
+  /* values outside their physical ranges (README "Physical ranges") */
+  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  s.bodies[0].mass = 1e300;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].mass: expected a physically possible mass"));
+  s.bodies[0].mass = 1500.0;
+  s.bodies[0].friction = 1e300;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].friction"));
+  s.bodies[0].friction = 0.0;
+  s.bodies[0].inertia[2] = 1e-300;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].inertia[2]: expected a physically possible radius of gyration"));
+  s.bodies[0].inertia[2] = 2700.0;
+  s.bodies[0].initial.velocity[0] = 1e5;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].initial.velocity: expected a physically possible speed"));
+  s.bodies[0].initial.velocity[0] = 13.4;
+  s.bodies[0].initial.yaw = 1e300;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].initial.yaw"));
+  /* a mesh of no size, and a deformable one that encloses no volume (a flat box) */
+  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  for (int k = 0; k < 24; ++k) s.car_v[k] = 0.25;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].vertices: expected a physically possible body size"));
+  make_box(4.5, 1.7, 0.0, s.car_v, s.car_t);
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_INPUT && contains(dm_last_error(), "must enclose a volume"));
+  /* a run of a billion steps would fill the memory with its history */
+  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  desc.duration = 1e9;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.duration"));
+  desc.duration = 1e3;
+  desc.time_step = 1e-5;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "at most 1e7 steps"));
+  CHECK(w == NULL);
+  /* an implausible value is accepted and warned, as in a scenario file */
+  desc.duration = 0.3;
+  desc.time_step = 0.0005;
+  s.bodies[0].friction = 2.0;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  const char* text = NULL;
+  CHECK(dm_world_summary_json(w, &text) == DM_OK && contains(text, "implausible_value") && contains(text, "bodies[0].friction"));
+  dm_world_destroy(w);
+}
+
+/* a world is driven one way, and a summary view outlives calls that do not change the world */
+static void test_states(void) {
+  car_and_wall s;
+  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world* w = NULL;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  if (!w) return;
+  CHECK(dm_world_run(w) == DM_OK);
+  const char* view = NULL;
+  CHECK(dm_world_summary_json(w, &view) == DM_OK);
+  char* kept = view ? strdup(view) : NULL;
+  /* a second summary and a copy (even one refused for its size) leave the view as it was: it was
+     freed by them before (valgrind: read of freed memory) */
+  const char* again = NULL;
+  char small[16];
+  size_t needed = 0;
+  CHECK(dm_world_summary_json(w, &again) == DM_OK && again == view);
+  CHECK(dm_world_copy_summary_json(w, small, sizeof small, &needed) == DM_ERROR_ARGUMENT);
+  CHECK(kept != NULL && strcmp(view, kept) == 0);
+  free(kept);
+  /* a finished run takes no more steps, of either kind */
+  int32_t finished = 0;
+  CHECK(dm_world_step(w, &finished) == DM_ERROR_STATE && finished == 1 && contains(dm_last_error(), "the run is finished"));
+  CHECK(dm_world_run(w) == DM_ERROR_STATE);
+  dm_world_destroy(w);
+  /* a run stepped by its own integrator takes no host step, and a host-driven one no step of its own */
+  dm_body_state states[2];
+  dm_loads loads[2];
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  CHECK(dm_world_step(w, &finished) == DM_OK && finished == 0);
+  CHECK(dm_body_state_get(w, 0, &states[0]) == DM_OK && dm_body_state_get(w, 1, &states[1]) == DM_OK);
+  CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_ERROR_STATE && contains(dm_last_error(), "stepped by its own integrator"));
+  dm_world_destroy(w);
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_OK);
+  CHECK(dm_world_host_step(w, states, 2, 1e300, loads) == DM_ERROR_ARGUMENT);
+  CHECK(dm_world_step(w, &finished) == DM_ERROR_STATE && contains(dm_last_error(), "host-driven"));
+  CHECK(dm_world_run(w) == DM_ERROR_STATE);
+  dm_world_destroy(w);
+}
+
 int main(int argc, char** argv) {
   if (argc != 4) {
     fprintf(stderr, "usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR\n");
@@ -262,6 +366,8 @@ int main(int argc, char** argv) {
   test_threads(scenario);
   test_force_provider();
   test_motion();
+  test_create_checks();
+  test_states();
   if (failures) fprintf(stderr, "%d checks failed\n", failures);
   return failures ? 1 : 0;
 }

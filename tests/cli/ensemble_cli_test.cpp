@@ -146,6 +146,21 @@ TEST_F(Ensemble, OneTwoAndThreeMpiRanksGiveTheSameBytes) {
   ExpectSameBytesOnRanks(spec, {"1", "2", "3"}, dir_ / "plain");
 }
 
+TEST_F(Ensemble, MpiRanksSayWhyTheyRefuseAsASerialRunDoes) {
+  // found by a fuzz of the ensemble command, 2026-11-28: under mpirun a refused --out ended in Open
+  // MPI's abort banner alone, exit 1; now the message and exit code of a serial run (2 here)
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const std::string spec = dymesh::testing::WriteBoxSpec(dir_, 4);
+  const fs::path file = dir_ / "not_a_folder";
+  std::ofstream(file) << "x";
+  const ProcessResult r = dymesh::testing::RunProcess(
+      {DYMESH_MPIEXEC, "--oversubscribe", "-np", "2", DYMESH_CLI, "ensemble", spec, "--quiet", "--out", file.string()},
+      dir_ / "process", 300.0);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: " + file.string() + ": --out: exists and is not a folder"), std::string::npos) << r.err;
+}
+
 TEST_F(Ensemble, StopToleranceAcrossMpiRanksEndsWhereThreadsDo) {
   // the master judges each checkpoint once all its records are in: the same samples and bytes as a
   // threaded run, at 2 and 3 ranks

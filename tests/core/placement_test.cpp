@@ -52,6 +52,47 @@ TEST(Placement, OverlapDepthIsHowFarTheDeepestVertexIsInside) {
   EXPECT_EQ(s.warnings[0].code, "initial_overlap");
 }
 
+// a one-cell box (180 x 66 x 30 in, its CG at the origin, moving +x) and a one-cell rigid wall 40 in
+// thick whose near face is at x = face_in: with the wall through the box's middle no vertex of either
+// lies inside the other
+Scenario OneCellBoxAndWall(double face_in) {
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  const BodySpec moving = s.bodies[0];
+  s.bodies[0] = testing::BoxVehicle("box", 180, 66, 30, {1, 1, 1}, 3000, 300, 100, 30, 0.1);
+  s.bodies[0].initial = moving.initial;
+  s.bodies[1] = testing::RigidWall(face_in);
+  s.bodies[1].mesh.box_segments = {1, 1, 1};
+  return s;
+}
+
+TEST(Placement, SurfacesThatCrossWithNoVertexInsideOverlap) {
+  // found by a fuzz of the library (2026-11-28): the wall through the middle of the box read as a
+  // gap of 70 in (the box's rear vertices to the wall's near face), `check` said ok and the run drove
+  // the box through the wall. To come clear along the closing direction the box must move back until
+  // its front face (x = 90 in) is behind the wall's near face (x = -20 in): 110 in. The diagonal of
+  // the wall's near face passes through the box (between its sides y = -33 and +33 in); the middle of
+  // that stretch, (-20, 0, 0), leaves the box through its front face 110 in back. The same with the
+  // bodies listed either way (1e-9 in of round-off)
+  Scenario s = OneCellBoxAndWall(-20.0);
+  const auto models = BuildBodyModels(s);
+  EXPECT_NEAR(MeasurePlacements(s, models)[0].gap / u::kInch, -110.0, 1e-9);
+  Scenario swapped = s;
+  std::swap(swapped.bodies[0], swapped.bodies[1]);
+  EXPECT_NEAR(MeasurePlacements(swapped, BuildBodyModels(swapped))[0].gap / u::kInch, -110.0, 1e-9);
+  try {
+    PlaceBodies(&s, models);
+    ADD_FAILURE() << "the overlap was not refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"box\" and \"wall\" overlap by 110 in at t = 0"), std::string::npos) << e.what();
+  }
+  // flush (the box's front face on the wall's, its edges on the wall's plane or ending there): no
+  // crossing, a gap of 0; and 1 in apart, 1 in
+  for (double apart : {0.0, 1.0}) {
+    const Scenario flush = OneCellBoxAndWall(90.0 + apart);
+    EXPECT_NEAR(MeasurePlacements(flush, BuildBodyModels(flush))[0].gap / u::kInch, apart, 1e-9) << apart;
+  }
+}
+
 TEST(Placement, BodiesPassingEachOtherDoNotMeet) {
   Scenario s = TurnedBoxBeforeWall(0.0, 100.0);
   s.bodies[0].initial.velocity = Vec3(0, 10, 0);  // along the wall

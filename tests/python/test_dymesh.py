@@ -76,6 +76,11 @@ class ScenarioFromPython(unittest.TestCase):
         spec["bodies"][0]["motion"] = "flying"
         with self.assertRaisesRegex(dymesh.InputError, r"bodies\[0\]\.motion"):
             dymesh.scenario(spec, os.path.dirname(BARRIER))
+        # a NaN (json.dumps writes it as NaN, refused before only as malformed JSON at a byte offset)
+        spec["bodies"][0]["motion"] = "planar"
+        spec["bodies"][0]["initial"]["speed"] = float("nan")
+        with self.assertRaisesRegex(dymesh.InputError, r"bodies\[0\]\.initial\.speed: expected a finite number, got nan"):
+            dymesh.scenario(spec, os.path.dirname(BARRIER))
 
 
 class Errors(unittest.TestCase):
@@ -95,6 +100,35 @@ class Errors(unittest.TestCase):
         bad[0, 6] = np.nan
         with self.assertRaisesRegex(ValueError, "non-finite"):
             run.host_step(bad, 0.0005)
+
+
+class RunState(unittest.TestCase):
+    # found by a fuzz of the library, 2026-11-28: a finished run stepped on, a host-driven run given a
+    # step of its own, and a path cut short at a NUL were all accepted
+    def test_a_run_is_driven_one_way_and_ends_once(self):
+        self.assertTrue(issubclass(dymesh.StateError, RuntimeError))
+        run = dymesh.load_scenario(BARRIER).run()
+        with self.assertRaisesRegex(dymesh.StateError, "the run is finished"):
+            run.step()
+        with self.assertRaisesRegex(dymesh.StateError, "the run is finished"):
+            run.run()
+        host = dymesh.load_scenario(BARRIER)
+        host.host_step(host.states(), 0.0005)
+        with self.assertRaisesRegex(dymesh.StateError, "host-driven"):
+            host.step()
+        own = dymesh.load_scenario(BARRIER)
+        own.step()
+        with self.assertRaisesRegex(dymesh.StateError, "stepped by its own integrator"):
+            own.host_step(own.states(), 0.0005)
+
+    def test_a_nul_in_a_path_is_refused(self):
+        with self.assertRaisesRegex(ValueError, "path: a file name cannot hold a NUL character"):
+            dymesh.load_scenario(BARRIER + "\0anything")
+        run = dymesh.load_scenario(BARRIER)
+        with tempfile.TemporaryDirectory() as out:
+            with self.assertRaisesRegex(ValueError, "dir: a file name cannot hold a NUL character"):
+                run.write_outputs(os.path.join(out, "a\0b"))
+            self.assertEqual(os.listdir(out), [])
 
 
 class ForceProvider(unittest.TestCase):

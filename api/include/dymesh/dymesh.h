@@ -17,6 +17,8 @@
  * Two ways to use it:
  * - World mode: dm_world_load_scenario (or dm_world_create from arrays), dm_world_run or
  *   dm_world_step, then read states, delta-V, crush and the summary JSON text.
+ *   A world is driven one way: once stepped in world mode it takes no host step, once host-driven no
+ *   world-mode step or run, and a finished run takes neither (DM_ERROR_STATE).
  * - Force-provider mode (how DyMESH sits inside a host's vehicle dynamics): each collision step,
  *   dm_world_host_step passes every body's pose and velocities and returns the force and moment at
  *   each CG in the body frame, updating crush; dm_world_host_finish ends the run. The summary,
@@ -127,13 +129,19 @@ DM_API dm_status dm_set_threads(int32_t threads);
 /** Loads and validates a scenario file and its meshes (as `dymesh check` does). */
 DM_API dm_status dm_world_load_scenario(const char* path, dm_world** out);
 
-/** Builds a world from arrays (SI units); `bodies` holds `body_count` descriptions. */
+/** Builds a world from arrays (SI units); `bodies` holds `body_count` descriptions. Held to a
+ *  scenario file's checks (README "Physical ranges"): DM_ERROR_ARGUMENT names the field of a value
+ *  outside its physical range, a name unusable in file names or used twice, a planar body given a
+ *  vertical velocity, a mesh of an impossible size (1 mm .. 1 km) or too many steps (1e7);
+ *  DM_ERROR_INPUT a deformable mesh that encloses no volume, bodies overlapping deeply at the start
+ *  or a step beyond the stable limit. Implausible values are warned in the summary. */
 DM_API dm_status dm_world_create(const dm_world_desc* world, const dm_body_desc* bodies, int32_t body_count, dm_world** out);
 
-/** Runs to the end (duration or separation). */
+/** Runs to the end (duration or separation); DM_ERROR_STATE for a finished or host-driven run. */
 DM_API dm_status dm_world_run(dm_world* w);
 
-/** One step; *finished is set nonzero once the run has ended. */
+/** One step; *finished is set nonzero once the run has ended. DM_ERROR_STATE for a finished or
+ *  host-driven run. */
 DM_API dm_status dm_world_step(dm_world* w, int32_t* finished);
 
 DM_API int32_t dm_world_body_count(const dm_world* w); /**< -1 for a null world */
@@ -179,7 +187,8 @@ DM_API void dm_world_destroy(dm_world* w);
 /* ---- force-provider mode ------------------------------------------------------------------- */
 
 /** Every body's state now (`count` = body count); writes `count` loads for the coming step of
- *  length dt and updates crush. The host integrates the bodies with the loads. */
+ *  length dt and updates crush. The host integrates the bodies with the loads. DM_ERROR_STATE for
+ *  a finished run or one stepped in world mode. */
 DM_API dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t count, double dt, dm_loads* out_loads);
 
 /** Ends a host-driven run with the states reached after the last step. */

@@ -20,7 +20,9 @@ struct PairPlacement {
 
 /// Gap of every pair at the scenario's initial poses, measured vertex to surface along the closing
 /// direction both ways (a's vertices against b's surface and b's against a's). A vertex counts as
-/// inside the other body when its surface lies both ahead of and behind it, turned away.
+/// inside the other body when its surface lies both ahead of and behind it, turned away. An edge that
+/// passes through the other's surface is probed at the middle of each stretch between two crossings,
+/// so surfaces that cross with no vertex inside overlap too.
 std::vector<PairPlacement> MeasurePlacements(const Scenario& scenario,
                                              const std::vector<std::shared_ptr<const BodyModel>>& models);
 

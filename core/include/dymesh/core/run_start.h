@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "dymesh/core/body.h"
+#include "dymesh/core/physical_ranges.h"
 #include "dymesh/core/placement.h"
 #include "dymesh/core/scenario.h"
 #include "dymesh/core/time_step_guide.h"
@@ -14,14 +15,6 @@ namespace dymesh {
 /// Throws InputError (field bodies[i].initial) for a body with motion "fixed" given a velocity or
 /// angular rate.
 void RefuseMovingFixedBodies(const Scenario& scenario);
-
-/// Sizes a body may have [m] (README Physical ranges): refused outside hard_lo .. hard_hi, warned
-/// (implausible_value) outside lo .. hi; a generated box's or cylinder's sizes as given (io), a mesh
-/// file's largest built extent (CheckRunStart).
-struct BodySizeRange {
-  double hard_lo, hard_hi, lo, hi;
-};
-inline constexpr BodySizeRange kBodySizeRange{1e-3, 1000.0, 0.01, 30.0};
 
 /// The bodies' placement at t = 0 and the time-step guide of a scenario that may start.
 struct RunStart {

@@ -69,7 +69,7 @@ class Simulation {
   /// returning false stops the run there. Returns true when the run reached its end.
   bool Run(const std::function<bool(double)>& on_step = {});
 
-  /// Advances one step; returns false once finished.
+  /// Advances one step; returns false once finished. Throws std::logic_error for a host-driven run.
   bool Advance();
 
   /// Force-provider mode (how DyMESH sits inside a host's own vehicle dynamics, as in HVE's SIMON):
@@ -78,7 +78,8 @@ class Simulation {
   /// before is recorded with these states (history, energy ledger), so the summary, the report and
   /// the outputs work from a host-driven run; the first call's states are where the run starts
   /// (delta-V, a pair's closing speed). Throws std::invalid_argument for a count that is not
-  /// the body count, a non-finite state or dt <= 0, and std::logic_error once finished.
+  /// the body count, a non-finite state or dt <= 0, and std::logic_error once finished or after
+  /// steps of the run's own integrator (Advance, Run).
   StepResult HostStep(const std::vector<RigidState>& states, double dt);
 
   /// Ends a host-driven run with the states the host reached after the last step (recorded, its
@@ -136,6 +137,7 @@ class Simulation {
   bool finished_ = false, failed_numerics_ = false, separated_ = false;
   std::unique_ptr<StepResult> host_pending_;  // force-provider mode: the step the host is integrating
   double host_step_ = 0.0;                    // force-provider mode: the step length while it is uniform
+  bool host_driven_ = false;                  // force-provider mode: HostStep has run (Advance refused)
   TimeStepGuide guide_;
   std::vector<PairPlacement> placements_;
   std::vector<PairContact> pair_contacts_;

@@ -15,6 +15,11 @@ namespace dymesh {
 /// bounds. Refuses (InputError) a deformable body whose mesh encloses no volume.
 std::vector<std::shared_ptr<const BodyModel>> BuildBodyModels(const Scenario& scenario);
 
+/// Refuses (InputError naming `file` and `field`) a deformable body's mesh that encloses no volume (a
+/// sheet, a single triangle, however turned). A mesh of an impossible size (kBodySizeRange) passes:
+/// its caller refuses it for that, by name.
+void RefuseFlatMesh(const TriMesh& mesh, const std::string& file, const std::string& field);
+
 /// The body-frame mesh of a mesh source (as BuildBodyMesh makes it); `field` names it in messages.
 using MeshProvider = std::function<TriMesh(const MeshSource& source, const std::string& field)>;
 

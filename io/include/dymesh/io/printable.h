@@ -23,6 +23,17 @@ inline bool HasControlCharacter(std::string_view text) {
   return false;
 }
 
+/// Whether a body's name can be part of its output files' names (NAME_deformed.obj, ...): not
+/// empty, no / or \, no control character, not "." or "..".
+inline bool UsableInFileNames(std::string_view name) {
+  return !name.empty() && !HasControlCharacter(name) && name.find_first_of("/\\") == std::string_view::npos &&
+         name != "." && name != "..";
+}
+
+/// What UsableInFileNames asks, for messages.
+inline constexpr const char* kFileNameRule =
+    "a name usable in file names (no /, \\ or control characters, DEL and U+0080..U+009F included)";
+
 /// `text` with tab, newline and CR as \t, \n, \r, other C0 controls and DEL as \xHH, and the C1
 /// controls as \u00HH; everything else as it is.
 inline std::string Printable(std::string_view text) {

@@ -1,0 +1,216 @@
+#include "world_from_arrays.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "argument_checks.h"
+#include "dymesh/core/physical_ranges.h"
+#include "dymesh/core/units.h"
+#include "dymesh/io/body_models.h"
+#include "dymesh/io/printable.h"
+
+namespace dymesh::api {
+namespace {
+
+// bytes of dm_body_desc before the fields appended since the first ABI (a caller built with that
+// header passes this struct_size)
+constexpr size_t kBodyDescFirstSize = offsetof(dm_body_desc, motion);
+// the largest element a later header may make dm_body_desc (a stride beyond it is a wrong size,
+// not a newer struct: read as one, it walked the array off the caller's memory)
+constexpr size_t kBodyDescLargestSize = 4096;
+
+// a value refused outside its physical range and warned outside the plausible one (io's
+// CheckPhysical, in SI)
+void CheckRange(const std::string& field, double value, const PhysicalRange& r, const char* unit,
+                std::vector<RunWarning>* warnings) {
+  auto text = [&](double v) {
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%.4g", v);
+    return std::string(digits) + unit;
+  };
+  Require(value >= r.hard_lo && value <= r.hard_hi, field + ": expected a physically possible " + r.what + " in " +
+                                                        text(r.hard_lo) + " .. " + text(r.hard_hi) + ", got " + text(value));
+  if (value < r.lo || value > r.hi)
+    warnings->push_back({"implausible_value", field,
+                         std::string(r.what) + " " + text(value) + " is outside the range met in vehicle collisions, " +
+                             text(r.lo) + " .. " + text(r.hi) + ": check the value and its unit"});
+}
+
+// body i of the caller's array, whose elements are struct_size bytes apart; fields the caller's
+// header did not have read as 0 (their defaults), fields of a newer header are not read
+dm_body_desc BodyDescAt(const dm_body_desc* bodies, int i) {
+  size_t stride = 0;
+  std::memcpy(&stride, bodies, sizeof stride);
+  Require(stride >= kBodyDescFirstSize && stride <= kBodyDescLargestSize,
+          "bodies[0].struct_size: expected sizeof(dm_body_desc) (" + std::to_string(sizeof(dm_body_desc)) +
+              " in this library), got " + std::to_string(stride));
+  const auto* element = reinterpret_cast<const unsigned char*>(bodies) + static_cast<size_t>(i) * stride;
+  dm_body_desc d;
+  std::memset(&d, 0, sizeof d);
+  std::memcpy(&d, element, std::min(stride, sizeof d));
+  const std::string at = "bodies[" + std::to_string(i) + "]";
+  Require(d.struct_size == stride, at + ".struct_size: expected the same size as bodies[0]'s");
+  return d;
+}
+
+// the motion model of a description (a fixed body takes only the default)
+MotionModel MotionFromDesc(const dm_body_desc& d, const std::string& at) {
+  const bool fixed = d.fixed != 0;
+  Require(d.motion >= DM_MOTION_DEFAULT && d.motion <= DM_MOTION_GRAVITY,
+          at + ".motion: expected a dm_motion: DM_MOTION_DEFAULT, _PLANAR, _FREE or _GRAVITY (0-3), got " +
+              std::to_string(d.motion));
+  Require(!fixed || d.motion == DM_MOTION_DEFAULT, at + ".motion: a fixed body takes DM_MOTION_DEFAULT");
+  switch (d.motion) {
+    case DM_MOTION_FREE: return MotionModel::kFree6Dof;
+    case DM_MOTION_GRAVITY: return MotionModel::kGravityGround;
+    case DM_MOTION_PLANAR: return MotionModel::kPlanar;
+    default: return fixed ? MotionModel::kFixed : MotionModel::kPlanar;
+  }
+}
+
+// the mesh of a description, its indices in range and its size possible (its CG within reach)
+TriMesh MeshFromDesc(const dm_body_desc& d, const std::string& at, std::vector<RunWarning>* warnings) {
+  NotNull(d.vertices, at + ".vertices");
+  NotNull(d.triangles, at + ".triangles");
+  Require(d.vertex_count >= 3 && d.triangle_count >= 1, at + ": expected at least 3 vertices and 1 triangle");
+  Require(Finite(d.vertices, 3 * static_cast<size_t>(d.vertex_count)), at + ".vertices: not finite");
+  TriMesh mesh;
+  for (size_t v = 0; v < static_cast<size_t>(d.vertex_count); ++v)
+    mesh.vertices.emplace_back(d.vertices[3 * v], d.vertices[3 * v + 1], d.vertices[3 * v + 2]);
+  for (size_t t = 0; t < static_cast<size_t>(d.triangle_count); ++t) {
+    std::array<int, 3> tri{d.triangles[3 * t], d.triangles[3 * t + 1], d.triangles[3 * t + 2]};
+    for (int k : tri) Require(k >= 0 && k < d.vertex_count, at + ".triangles: vertex index out of range");
+    mesh.triangles.push_back(tri);
+  }
+  // as a mesh file's built body (CheckRunStart) and a scenario's CG about its mesh
+  const MeshStats stats = ComputeStats(mesh);
+  CheckRange(at + ".vertices", (stats.max - stats.min).maxCoeff(), kBodySizeRange, " m (largest extent)", warnings);
+  // a moving body turns about its CG (a fixed one's origin is only where its vertices are measured from)
+  const Vec3 centre = 0.5 * (stats.min + stats.max);
+  for (int k = 0; d.fixed == 0 && k < 3; ++k)
+    CheckRange(at + ".vertices", -centre[k], kCgRange, " m (the CG from the bounds centre)", warnings);
+  return mesh;
+}
+
+// the pose and velocities of a description, in the ranges a scenario's "initial" has
+void CheckInitial(const dm_body_desc& d, MotionModel motion, const std::string& at, std::vector<RunWarning>* warnings) {
+  const dm_body_state& s = d.initial;
+  for (int k = 0; k < 3; ++k)
+    CheckRange(at + ".initial.position[" + std::to_string(k) + "]", s.position[k], kPositionRange, " m", warnings);
+  CheckRange(at + ".initial.yaw", s.yaw / units::kDegree, kHeadingRange, "", warnings);
+  CheckRange(at + ".initial.roll", s.roll / units::kDegree, kTiltRange, "", warnings);
+  CheckRange(at + ".initial.pitch", s.pitch / units::kDegree, kTiltRange, "", warnings);
+  CheckRange(at + ".initial.velocity", std::hypot(s.velocity[0], s.velocity[1], s.velocity[2]), kSpeedRange, " m/s", warnings);
+  CheckRange(at + ".initial.omega", std::hypot(s.omega[0], s.omega[1], s.omega[2]) / units::kDegree, kYawRateRange, "",
+             warnings);
+  // a planar body holds its height: a vertical velocity would be dropped (delta-V and the energy
+  // balance read wrong)
+  Require(motion != MotionModel::kPlanar || s.velocity[2] == 0.0,
+          at + ".initial.velocity[2]: a planar body holds its height: expected 0, got " + std::to_string(s.velocity[2]) +
+              " m/s (give DM_MOTION_FREE or DM_MOTION_GRAVITY for vertical motion)");
+}
+
+// one body's scenario entry and model from its description
+std::shared_ptr<const BodyModel> BodyFromDesc(const dm_body_desc& d, int i, BodySpec* spec,
+                                              std::vector<RunWarning>* warnings) {
+  const std::string at = "bodies[" + std::to_string(i) + "]";
+  Require(d.name != nullptr && d.name[0] != '\0', at + ".name: expected a non-empty name");
+  Require(UsableInFileNames(d.name), at + ".name: expected " + kFileNameRule + ", got \"" + Printable(d.name) + "\"");
+  TriMesh mesh = MeshFromDesc(d, at, warnings);
+  const bool fixed = d.fixed != 0, rigid = d.rigid != 0;
+  Require(fixed || (std::isfinite(d.mass) && d.mass > 0.0), at + ".mass: expected a finite mass > 0");
+  Require(fixed || (Finite(d.inertia, 3) && d.inertia[0] > 0 && d.inertia[1] > 0 && d.inertia[2] > 0),
+          at + ".inertia: expected three finite values > 0");
+  if (!fixed) {
+    CheckRange(at + ".mass", d.mass, kMassRange, " kg", warnings);
+    for (int k = 0; k < 3; ++k)
+      CheckRange(at + ".inertia[" + std::to_string(k) + "]", std::sqrt(d.inertia[k] / d.mass), kGyrationRange, " m",
+                 warnings);
+  }
+  Require(std::isfinite(d.stiffness_a) && std::isfinite(d.stiffness_b) && d.stiffness_a >= 0 && d.stiffness_b >= 0,
+          at + ".stiffness: expected finite A, B >= 0");
+  Require(rigid || d.stiffness_a > 0 || d.stiffness_b > 0, at + ".stiffness: a deformable body needs A > 0 or B > 0");
+  if (!rigid) {
+    CheckRange(at + ".stiffness_a", d.stiffness_a, kStiffnessARange, "", warnings);
+    CheckRange(at + ".stiffness_b", d.stiffness_b, kStiffnessBRange, "", warnings);
+    RefuseFlatMesh(mesh, "(dm_world_create)", at + ".vertices");
+  }
+  Require(d.restitution >= 0 && d.restitution <= 1, at + ".restitution: expected a value in [0, 1]");
+  Require(std::isfinite(d.friction) && d.friction >= 0, at + ".friction: expected a finite value >= 0");
+  CheckRange(at + ".friction", d.friction, kFrictionRange, "", warnings);
+  // the scenario entry and the model
+  std::array<Stiffness, kBodySurfaceCount> k;
+  Stiffness s;
+  s.A = d.stiffness_a, s.B = d.stiffness_b;
+  k.fill(s);
+  spec->name = d.name;
+  spec->mass = fixed ? 0.0 : d.mass;
+  spec->rigid = rigid;
+  spec->motion = MotionFromDesc(d, at);
+  spec->restitution = d.restitution, spec->friction = d.friction;
+  spec->stiffness = k;
+  spec->initial = ToRigid(d.initial, i);
+  CheckInitial(d, spec->motion, at, warnings);
+  const Mat3 inertia = fixed ? Mat3::Identity() : Vec3(d.inertia[0], d.inertia[1], d.inertia[2]).asDiagonal().toDenseMatrix();
+  return std::make_shared<const BodyModel>(
+      MakeBodyModel(d.name, std::move(mesh), k, spec->mass, inertia, d.restitution, d.friction, rigid));
+}
+
+// the scenario part of a world description
+Scenario ScenarioFromDesc(const dm_world_desc& d) {
+  Require(d.struct_size >= sizeof(dm_world_desc), "world.struct_size: expected sizeof(dm_world_desc)");
+  Require(std::isfinite(d.time_step) && d.time_step > 0, "world.time_step: expected a finite step > 0");
+  Require(std::isfinite(d.duration) && d.duration >= d.time_step, "world.duration: expected a duration >= the step");
+  Require(d.passes_per_step >= 0 && d.passes_per_step <= 1000, "world.passes_per_step: expected 0..1000");
+  Scenario s;
+  CheckRange("world.duration", d.duration, kDurationRange, " s", &s.warnings);
+  Require(d.duration / d.time_step <= kMaxSteps,
+          "world.duration: expected at most 1e7 steps (duration / time_step), got " + std::to_string(d.duration / d.time_step));
+  s.file = "(dm_world_create)";
+  s.units = UnitSystem::kSI;
+  s.time_step = d.time_step;
+  s.duration = d.duration;
+  s.stop_at_separation = d.stop_at_separation != 0;
+  if (d.passes_per_step > 0) s.contact.passes_per_step = d.passes_per_step;
+  return s;
+}
+
+}  // namespace
+
+RigidState ToRigid(const dm_body_state& s, int body) {
+  Require(Finite(s.position, 3) && Finite(s.velocity, 3) && Finite(s.omega, 3) && std::isfinite(s.roll) &&
+              std::isfinite(s.pitch) && std::isfinite(s.yaw),
+          "state of body " + std::to_string(body) + " is not finite");
+  RigidState r;
+  r.position = Vec3(s.position[0], s.position[1], s.position[2]);
+  r.roll = s.roll, r.pitch = s.pitch, r.yaw = s.yaw;
+  r.velocity = Vec3(s.velocity[0], s.velocity[1], s.velocity[2]);
+  r.omega = Vec3(s.omega[0], s.omega[1], s.omega[2]);
+  return r;
+}
+
+ArrayWorld WorldFromArrays(const dm_world_desc& world, const dm_body_desc* bodies, int32_t body_count) {
+  Require(body_count >= 2, "body_count: expected at least 2 bodies, got " + std::to_string(body_count));
+  ArrayWorld out;
+  out.scenario = ScenarioFromDesc(world);
+  out.scenario.bodies.resize(body_count);
+  bool any_deformable = false;
+  for (int i = 0; i < body_count; ++i) {
+    BodySpec& spec = out.scenario.bodies[i];
+    out.models.push_back(BodyFromDesc(BodyDescAt(bodies, i), i, &spec, &out.scenario.warnings));
+    // the name becomes output file names: one body's files would overwrite another's
+    for (int k = 0; k < i; ++k)
+      Require(out.scenario.bodies[k].name != spec.name,
+              "bodies[" + std::to_string(i) + "].name: duplicate body name \"" + spec.name + "\"");
+    any_deformable = any_deformable || !spec.rigid;
+  }
+  Require(any_deformable, "bodies: every body is rigid: at least one must be deformable");
+  return out;
+}
+
+}  // namespace dymesh::api
