@@ -153,13 +153,19 @@ static void make_car_and_wall(car_and_wall* s, dm_body_state car, double wall_x,
                                 0.1, 0.0, 1, 1, {{wall_x, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, DM_MOTION_DEFAULT};
 }
 
+/* the box car at 13.4 m/s, 1 cm before the wall (0.5 ms steps, 0.3 s, stop at separation): a new world */
+static dm_world* car_into_wall(car_and_wall* s) {
+  make_car_and_wall(s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world* w = NULL;
+  CHECK(dm_world_create(&desc, s->bodies, 2, &w) == DM_OK);
+  return w;
+}
+
 /* force-provider mode: the host integrates a box car into a fixed wall with the loads it gets */
 static void test_force_provider(void) {
   car_and_wall s;
-  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
-  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
-  dm_world* w = NULL;
-  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  dm_world* w = car_into_wall(&s);
   if (!w) return;
   dm_body_state states[2];
   dm_loads loads[2];
@@ -315,10 +321,7 @@ static void test_create_checks(void) {
 /* a world is driven one way, and a summary view outlives calls that do not change the world */
 static void test_states(void) {
   car_and_wall s;
-  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
-  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
-  dm_world* w = NULL;
-  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  dm_world* w = car_into_wall(&s);
   if (!w) return;
   CHECK(dm_world_run(w) == DM_OK);
   const char* view = NULL;
@@ -341,12 +344,12 @@ static void test_states(void) {
   /* a run stepped by its own integrator takes no host step, and a host-driven one no step of its own */
   dm_body_state states[2];
   dm_loads loads[2];
-  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  w = car_into_wall(&s);
   CHECK(dm_world_step(w, &finished) == DM_OK && finished == 0);
   CHECK(dm_body_state_get(w, 0, &states[0]) == DM_OK && dm_body_state_get(w, 1, &states[1]) == DM_OK);
   CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_ERROR_STATE && contains(dm_last_error(), "stepped by its own integrator"));
   dm_world_destroy(w);
-  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  w = car_into_wall(&s);
   CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_OK);
   CHECK(dm_world_host_step(w, states, 2, 1e300, loads) == DM_ERROR_ARGUMENT);
   CHECK(dm_world_step(w, &finished) == DM_ERROR_STATE && contains(dm_last_error(), "host-driven"));
