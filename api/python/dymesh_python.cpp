@@ -205,10 +205,17 @@ PYBIND11_MODULE(dymesh, m) {
 
   py::class_<Run>(m, "Run", "A scenario run: world mode (run, step) or force-provider mode (host_step).")
       .def("run", [](py::object self) {
-             RequireRunning(self.cast<const Run&>());
-             self.cast<Run&>().sim().Run();
+             Run& r = self.cast<Run&>();
+             RequireRunning(r);
+             // Ctrl-C (or any signal Python handles) stops the run between steps, its state consistent
+             // and unfinished (status "interrupted"), and raises there (KeyboardInterrupt)
+             bool signalled = false;
+             r.sim().Run([&](double) { return !(signalled = PyErr_CheckSignals() != 0); });
+             if (signalled) throw py::error_already_set();
              return self;
-           }, "Runs to the end (duration or separation); returns the run. StateError for a finished or host-driven run.")
+           }, "Runs to the end (duration or separation); returns the run. StateError for a finished or host-driven "
+              "run; a Ctrl-C stops it between steps (KeyboardInterrupt; the run stays unfinished, status "
+              "\"interrupted\").")
       .def("step", [](Run& r) { RequireRunning(r); r.sim().Advance(); return r.sim().finished(); },
            "One step; True once the run has ended. StateError for a finished or host-driven run.")
       .def_property_readonly("time", [](const Run& r) { return r.sim().time(); })

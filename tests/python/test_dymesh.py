@@ -4,6 +4,7 @@ DYMESH_DATA_DIR and DYMESH_CLI name the data folder and the command."""
 import gc
 import json
 import os
+import signal
 import subprocess
 import tempfile
 import unittest
@@ -120,6 +121,31 @@ class RunState(unittest.TestCase):
         own.step()
         with self.assertRaisesRegex(dymesh.StateError, "stepped by its own integrator"):
             own.host_step(own.states(), 0.0005)
+
+    def test_ctrl_c_stops_a_run_between_steps(self):
+        # a run of a million steps (no stop at separation), interrupted after 0.3 s as Ctrl-C would
+        # (until 2026-11-28 the signal was raised only once the run had ended)
+        with open(BARRIER, encoding="utf-8") as f:
+            spec = json.load(f)
+        spec["time"] = {"step": 0.0005, "duration": 500.0, "stop_at_separation": False}
+        run = dymesh.scenario(spec, os.path.dirname(BARRIER))
+        # a real signal, as a terminal's Ctrl-C is (run() holds the interpreter, so a Python thread
+        # could not interrupt it), whose handler raises KeyboardInterrupt
+        previous = signal.signal(signal.SIGALRM, signal.default_int_handler)
+        try:
+            signal.setitimer(signal.ITIMER_REAL, 0.3)
+            with self.assertRaises(KeyboardInterrupt):
+                run.run()
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, previous)
+        self.assertFalse(run.finished)
+        self.assertEqual(run.status, "interrupted")
+        stopped = run.time
+        self.assertGreater(stopped, 0.0)
+        self.assertLess(stopped, 500.0)
+        run.step()  # it goes on from where it stopped
+        self.assertAlmostEqual(run.time, stopped + 0.0005, delta=1e-9)
 
     def test_a_nul_in_a_path_is_refused(self):
         with self.assertRaisesRegex(ValueError, "path: a file name cannot hold a NUL character"):
