@@ -51,11 +51,26 @@ std::array<int, 3> SegmentGrid::CellOf(const Vec3& p) const {
 }
 
 void SegmentGrid::CandidatesAlong(const Vec3& p0, const Vec3& p1, std::vector<int>* out) const {
-  // the cells round points half a cell apart along the segment (every cell it passes is within one
-  // cell of such a point), each triangle once
-  const int steps = static_cast<int>(std::ceil(2.0 * (p1 - p0).norm() / cell_)) + 1;
+  // the part of the segment within the grid (a cell of margin): a long edge passing a fine body
+  // steps only across the body
+  double t0 = 0.0, t1 = 1.0;
+  const Vec3 d = p1 - p0;
+  for (int k = 0; k < 3; ++k) {
+    const double lo = lo_[k] - cell_, hi = hi_[k] + cell_;
+    if (d[k] == 0.0) {
+      if (p0[k] < lo || p0[k] > hi) return;
+      continue;
+    }
+    const double a = (lo - p0[k]) / d[k], b = (hi - p0[k]) / d[k];
+    t0 = std::max(t0, std::min(a, b));
+    t1 = std::min(t1, std::max(a, b));
+  }
+  if (t0 > t1) return;
+  // the cells round points half a cell apart along it (every cell it passes is within one cell of
+  // such a point), each triangle once
+  const int steps = static_cast<int>(std::ceil(2.0 * (t1 - t0) * d.norm() / cell_)) + 1;
   for (int i = 0; i <= steps; ++i) {
-    const std::array<int, 3> c = CellOf(p0 + (static_cast<double>(i) / steps) * (p1 - p0));
+    const std::array<int, 3> c = CellOf(p0 + (t0 + (t1 - t0) * i / steps) * d);
     for (int z = std::max(c[2] - 1, 0); z <= std::min(c[2] + 1, dims_[2] - 1); ++z)
       for (int y = std::max(c[1] - 1, 0); y <= std::min(c[1] + 1, dims_[1] - 1); ++y)
         for (int x = std::max(c[0] - 1, 0); x <= std::min(c[0] + 1, dims_[0] - 1); ++x) {
@@ -69,9 +84,6 @@ void SegmentGrid::CandidatesAlong(const Vec3& p0, const Vec3& p1, std::vector<in
 
 std::vector<double> SegmentGrid::Crossings(const Vec3& p0, const Vec3& p1) const {
   std::vector<double> crossings;
-  // a segment clear of the bounds crosses nothing
-  const Vec3 a = p0.cwiseMin(p1), b = p0.cwiseMax(p1);
-  if ((a.array() > hi_.array() + off_plane_).any() || (b.array() < lo_.array() - off_plane_).any()) return crossings;
   std::vector<int> candidates;
   CandidatesAlong(p0, p1, &candidates);
   for (int t : candidates) {
