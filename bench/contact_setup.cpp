@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <stdexcept>
 
 #include "dymesh/accel/embree_locator.h"
+#include "dymesh/core/physical_ranges.h"
+#include "dymesh/io/body_models.h"
 #include "dymesh/io/mesh_import.h"
 
 #ifndef DYMESH_DATA_DIR
@@ -46,7 +49,19 @@ TriMesh LoadUserMesh(const std::string& path, const std::array<std::string, 3>& 
   MeshSource source;
   source.file = path;
   source.axes = axes;
-  return Centred(BuildBodyMesh(source, "(bench)", "mesh"));
+  TriMesh mesh = Centred(BuildBodyMesh(source, "(bench)", "mesh"));
+  // both bodies crush: the checks of a scenario's deformable body (a possible size, a volume)
+  const MeshStats stats = ComputeStats(mesh);
+  const double extent = (stats.max - stats.min).maxCoeff();
+  if (extent < kBodySizeRange.hard_lo || extent > kBodySizeRange.hard_hi) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "builds a body %.4g m across at its largest (the file read in metres); expected a physically "
+                  "possible body size in %g .. %g m", extent, kBodySizeRange.hard_lo, kBodySizeRange.hard_hi);
+    throw InputError(path, "mesh", text);
+  }
+  RefuseFlatMesh(mesh, path, "mesh");
+  return mesh;
 }
 
 ContactSetup PlaceInContact(TriMesh master, TriMesh slave, double penetration, double speed) {

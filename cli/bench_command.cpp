@@ -45,7 +45,9 @@ int RunBench(const BenchRequest& request) {
   const bench::RaySet rays = bench::PassRays(setup, options);
   const TriMesh& master = setup.master->mesh;
   if (rays.size() == 0) {
-    std::fprintf(stderr, "error: the meshes do not reach each other when placed in contact\n");
+    std::fprintf(stderr, "error: %s and %s do not reach each other when placed in contact (the slave's front %g m into "
+                 "the master's side): check --axes and that the files are in metres\n",
+                 request.master.c_str(), request.slave.c_str(), kPenetration);
     return 2;
   }
   // locate rates on the same segments (one thread each)

@@ -182,21 +182,31 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                        "before it): a restitution above 1, not physical; the crush law is too stiff for the time "
                        "step (check C3, D3 and Kv) or the masses are wrong",
                        -absorbed, -100.0 * absorbed / available, available)});
+  // the longest step taken: the scenario's, or the longest dt a host gave
   const TimeStepGuide& g = sim.time_step_guide();
-  if (g.bounded && sc.time_step > g.recommended_step)
+  const double step = sim.largest_step();
+  if (g.bounded && step > g.recommended_step)
     w->push_back({"time_step_coarse", "time.step",
                   Text("step %g s resolves the contact period %.3g s of \"%s\" against \"%s\" with %.0f steps "
                        "(fewer than %d); use at most %.3g s",
-                       sc.time_step, g.contact_period, sc.bodies[g.body_a].name.c_str(),
-                       sc.bodies[g.body_b].name.c_str(), g.contact_period / sc.time_step, kMinStepsPerContact,
+                       step, g.contact_period, sc.bodies[g.body_a].name.c_str(),
+                       sc.bodies[g.body_b].name.c_str(), g.contact_period / step, kMinStepsPerContact,
                        g.recommended_step)});
-  if (g.fastest_a >= 0 && sc.time_step > g.reach_step)
+  if (g.fastest_a >= 0 && step > g.reach_step)
     w->push_back({"step_beyond_search_reach", "time.step",
                   Text("\"%s\" and \"%s\" close %.3g m per step at their initial relative speed, farther than the "
                        "contact search reaches (contact.toofar_maximum %.3g m): a node can cross a surface in one "
                        "step unseen and the contact be missed; use at most %.3g s",
                        sc.bodies[g.fastest_a].name.c_str(), sc.bodies[g.fastest_b].name.c_str(),
-                       g.relative_speed * sc.time_step, sc.contact.toofar_maximum, g.reach_step)});
+                       g.relative_speed * step, sc.contact.toofar_maximum, g.reach_step)});
+  // force-provider mode: a host that moved a body other than its velocities say
+  if (const HostMotionMismatch& m = sim.host_motion_mismatch(); m.body >= 0)
+    w->push_back({"host_motion_inconsistent", "",
+                  Text("the host moved \"%s\" %.3g m over the host step ending at t = %.4f s, where its velocities account for "
+                       "%.3g m: positions and velocities disagree (a teleport, or positions not integrated from "
+                       "the velocities); the contact work is booked from the velocities, so the energy account "
+                       "and the crush energies do not hold",
+                       sc.bodies[m.body].name.c_str(), m.moved, m.time, m.accounted)});
   // each body's rest mesh: its extent, and whether it is closed
   std::vector<MeshStats> rest_stats;
   for (int i = 0; i < sim.engine().body_count(); ++i) rest_stats.push_back(ComputeStats(sim.engine().model(i).mesh));

@@ -9,7 +9,7 @@ namespace dymesh {
 
 Vec3 BodyFrameImpulse(const Simulation& sim, int body) {
   Vec3 impulse = Vec3::Zero();
-  for (const Sample& s : sim.history()) impulse += s.bodies[body].loads.force_body * sim.scenario().time_step;
+  for (const Sample& s : sim.history()) impulse += s.bodies[body].loads.force_body * s.step;
   return impulse;
 }
 
@@ -155,7 +155,12 @@ Summary Summarize(const Simulation& sim) {
   }
   sum.energy_discontinuity = sum.crush_energy - sum.law_energy;
   const double lost = sum.kinetic_before - sum.kinetic_after;
-  sum.energy_balance_error = lost != 0.0 ? (lost - sum.crush_energy - sum.friction_energy) / lost : 0.0;
+  // relative to the kinetic energy lost; with none lost, contact work of either sign is wholly unbalanced
+  // (-100 % or +100 %: a host that holds the bodies' velocities while the contact works, 2026-11-28,
+  // read 0.0)
+  const double work = sum.crush_energy + sum.friction_energy;
+  sum.energy_balance_error = lost != 0.0 ? (lost - sum.crush_energy - sum.friction_energy) / lost
+                             : work > 0.0 ? -1.0 : work < 0.0 ? 1.0 : 0.0;
   // each pair's closing and separation speed along its impulse; the largest impulse is the main one
   double largest = 0.0;
   for (const PairContact& c : sim.pair_contacts()) {

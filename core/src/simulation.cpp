@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dymesh/core/physical_ranges.h"
+#include "dymesh/core/units.h"
 
 namespace dymesh {
 
@@ -41,6 +42,7 @@ bool Simulation::Advance() {
   if (host_driven_) throw std::logic_error("the run is host-driven (HostStep): it takes no step of its own");
   const double dt = scenario_.time_step;
   // contact step at the current poses, then the rigid-body host integrates every body
+  largest_step_ = dt;
   const StepResult step = engine_->Step(dt);
   if (!Integrate(step, dt)) {
     // a non-finite pose or velocity: keep the last finite state and stop
@@ -54,7 +56,7 @@ bool Simulation::Advance() {
   ++steps_;
   time_ = steps_ * dt;
   NoteContact(step, dt);
-  Record(&step);
+  Record(&step, dt);
   // stop at the duration, or once contact has been over for the separation window and no two bodies
   // can meet again within the slap horizon (a car turning off a wall slaps it with its tail; spec §1:
   // the collision is over once its forces have separated the bodies): asked again when they could
@@ -126,11 +128,13 @@ bool Simulation::Integrate(const StepResult& step, double dt) {
 StepResult Simulation::HostStep(const std::vector<RigidState>& states, double dt) {
   if (finished_) throw std::logic_error("HostStep: the run is finished");
   if (steps_ > 0 && !host_driven_) throw std::logic_error("HostStep: the run was stepped by its own integrator");
-  host_driven_ = true;
   // a step no longer than a run may last (README Physical ranges)
   if (!(dt > 0.0 && dt <= kDurationRange.hard_hi))
     throw std::invalid_argument("HostStep: dt must be finite and > 0, at most 1e4 s (a run's longest duration)");
   AcceptHostStates(states);
+  host_driven_ = true;
+  host_pending_step_ = dt;
+  largest_step_ = std::max(largest_step_, dt);
   // the contact step at the host's poses; the host integrates its loads
   StepResult step = engine_->Step(dt);
   diagnostics_.Add(step.diagnostics);
@@ -155,12 +159,8 @@ void Simulation::AcceptHostStates(const std::vector<RigidState>& states) {
   if (static_cast<int>(states.size()) != engine_->body_count())
     throw std::invalid_argument("expected " + std::to_string(engine_->body_count()) + " body states, got " +
                                 std::to_string(states.size()));
-  for (std::size_t i = 0; i < states.size(); ++i) {
-    const RigidState& r = states[i];
-    if (!r.position.allFinite() || !r.velocity.allFinite() || !r.omega.allFinite() ||
-        !std::isfinite(r.roll + r.pitch + r.yaw))
-      throw std::invalid_argument("body " + std::to_string(i) + ": non-finite pose or velocity");
-  }
+  for (std::size_t i = 0; i < states.size(); ++i) RefuseImpossibleHostState(static_cast<int>(i), states[i]);
+  if (host_pending_) CompareHostMotion(states, host_pending_step_);
   for (int i = 0; i < engine_->body_count(); ++i) engine_->SetRigidState(i, states[i]);
   // before the first step the run starts where the host has the bodies, not where construction put
   // them (delta-V and a contact that begins in the first step are measured from here)
@@ -169,8 +169,39 @@ void Simulation::AcceptHostStates(const std::vector<RigidState>& states) {
   // the previous step ends here: book its work and record it
   if (host_pending_) {
     engine_->AccountWork();
-    Record(host_pending_.get());
+    Record(host_pending_.get(), host_pending_step_);
     host_pending_.reset();
+  }
+}
+
+void Simulation::RefuseImpossibleHostState(int body, const RigidState& r) const {
+  // finite, and within the physical ranges a scenario's initial state has (README Physical ranges);
+  // angles may wind (a spinning body's yaw), but not past where their sines lose digits
+  const auto refuse = [&](const std::string& what) {
+    throw std::invalid_argument("body " + std::to_string(body) + ": " + what);
+  };
+  if (!r.position.allFinite() || !r.velocity.allFinite() || !r.omega.allFinite() || !std::isfinite(r.roll + r.pitch + r.yaw))
+    refuse("non-finite pose or velocity");
+  if (r.position.cwiseAbs().maxCoeff() > kPositionRange.hard_hi) refuse("position beyond 1e5 m");
+  if (r.velocity.norm() > kSpeedRange.hard_hi) refuse("speed beyond the speed of sound (343 m/s)");
+  if (r.omega.norm() > kYawRateRange.hard_hi * units::kDegree) refuse("angular rate beyond 36000 deg/s");
+  if (std::max({std::abs(r.roll), std::abs(r.pitch), std::abs(r.yaw)}) > kMaxHostAngle)
+    refuse("roll, pitch or yaw beyond 1e4 rad");
+}
+
+void Simulation::CompareHostMotion(const std::vector<RigidState>& states, double dt) {
+  // the contact work of a host step is booked from the velocities (at the contact points): a host
+  // that moves a body other than its velocities say (a teleport, positions not integrated) leaves
+  // work unbooked. Any integrator moves a body between v_before dt and v_after dt; the trapezoid is
+  // within half their difference of either
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const RigidState& before = engine_->state(static_cast<int>(i)).rigid;
+    const Vec3 moved = states[i].position - before.position;
+    const Vec3 accounted = 0.5 * (before.velocity + states[i].velocity) * dt;
+    const double allowed = kHostMotionSlack + 0.01 * accounted.norm() + (states[i].velocity - before.velocity).norm() * dt;
+    const double excess = (moved - accounted).norm() - allowed;
+    if (excess > 0.0 && excess > host_motion_.excess)
+      host_motion_ = HostMotionMismatch{static_cast<int>(i), time_, moved.norm(), accounted.norm(), excess};
   }
 }
 
@@ -203,9 +234,10 @@ void Simulation::NoteContact(const StepResult& step, double dt) {
   recheck_separation_ = 0.0;  // the contact changed the motion: a free-motion forecast no longer holds
 }
 
-void Simulation::Record(const StepResult* step) {
+void Simulation::Record(const StepResult* step, double dt) {
   Sample sample;
   sample.time = time_;
+  sample.step = dt;
   for (int i = 0; i < engine_->body_count(); ++i) {
     const BodyState& s = engine_->state(i);
     BodySample b;

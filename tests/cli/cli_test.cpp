@@ -231,5 +231,30 @@ TEST_F(Cli, BenchRefusesAMissingMesh) {
   EXPECT_NE(r.err.find("nope.obj"), std::string::npos) << r.err;
 }
 
+// found by a fuzz of `dymesh bench` (2026-11-28): a 5 km mesh and a single flat triangle were timed as
+// bodies (exit 0), where a scenario refuses them; a 5 km slave said only "the meshes do not reach each
+// other"
+TEST_F(Cli, BenchRefusesMeshesAScenarioRefuses) {
+  const std::string cube = (dir_ / "cube.obj").string(), huge = (dir_ / "huge.obj").string(),
+                    sheet = (dir_ / "sheet.obj").string();
+  const std::string faces = "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
+  auto box = [&](const std::string& path, double size) {
+    std::ofstream out(path);
+    for (int i = 0; i < 8; ++i)
+      out << "v " << ((i == 1 || i == 2 || i == 5 || i == 6) ? size : 0.0) << " " << ((i == 2 || i == 3 || i == 6 || i == 7) ? size : 0.0)
+          << " " << (i >= 4 ? size : 0.0) << "\n";
+    out << faces;
+  };
+  box(cube, 2.0);
+  box(huge, 5000.0);
+  std::ofstream(sheet) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const ProcessResult big = Dymesh({"bench", "--master", huge, "--slave", cube});
+  EXPECT_EQ(big.exit_code, 2) << big.err;
+  EXPECT_NE(big.err.find(huge + ": mesh: builds a body 5000 m across at its largest"), std::string::npos) << big.err;
+  const ProcessResult flat = Dymesh({"bench", "--master", cube, "--slave", sheet});
+  EXPECT_EQ(flat.exit_code, 2) << flat.err;
+  EXPECT_NE(flat.err.find(sheet + ": mesh: a deformable body's mesh must enclose a volume"), std::string::npos) << flat.err;
+}
+
 }  // namespace
 }  // namespace dymesh

@@ -12,21 +12,27 @@
 namespace dymesh {
 namespace {
 
-// the host: the engine's own semi-implicit integrator, driven from outside
-void RunAsHost(Simulation* sim) {
+// the host: the engine's own semi-implicit integrator, driven from outside, `steps` steps of `dt`
+void RunAsHost(Simulation* sim, double dt, int steps) {
   const Scenario& s = sim->scenario();
   std::vector<RigidState> states;
   for (int i = 0; i < sim->engine().body_count(); ++i) states.push_back(sim->engine().state(i).rigid);
-  for (int step = 0; step < static_cast<int>(s.duration / s.time_step + 0.5); ++step) {
-    const StepResult r = sim->HostStep(states, s.time_step);
+  for (int step = 0; step < steps; ++step) {
+    const StepResult r = sim->HostStep(states, dt);
     for (int i = 0; i < sim->engine().body_count(); ++i) {
       const BodyModel& m = sim->engine().model(i);
       const ExternalLoads extra = MotionModelLoads(s.bodies[i].motion, m, states[i], s.bodies[i].initial.position.z());
       IntegrateRigidBody(m, s.bodies[i].motion, r.loads[i].force_earth + extra.force_earth,
-                         r.loads[i].moment_body + extra.moment_body, s.time_step, &states[i]);
+                         r.loads[i].moment_body + extra.moment_body, dt, &states[i]);
     }
   }
   sim->FinishHostRun(states);
+}
+
+// the scenario's own step over its duration
+void RunAsHost(Simulation* sim) {
+  const Scenario& s = sim->scenario();
+  RunAsHost(sim, s.time_step, static_cast<int>(s.duration / s.time_step + 0.5));
 }
 
 TEST(HostMode, SameRunAsTheEnginesOwnHost) {
@@ -38,6 +44,7 @@ TEST(HostMode, SameRunAsTheEnginesOwnHost) {
   own.Run();
   Simulation hosted(s, models, accel::MakeEmbreeLocatorFactory(device));
   RunAsHost(&hosted);
+  EXPECT_EQ(hosted.host_motion_mismatch().body, -1);
   ASSERT_EQ(hosted.history().size(), own.history().size());
   for (std::size_t k = 0; k < own.history().size(); ++k)
     for (int i = 0; i < 2; ++i) {
@@ -81,10 +88,77 @@ TEST(HostMode, RefusesWrongCountsNonFiniteStatesAndBadSteps) {
   EXPECT_THROW(sim.HostStep(states, -1.0), std::invalid_argument);
   states[0].velocity.x() = std::nan("");
   EXPECT_THROW(sim.HostStep(states, 0.0005), std::invalid_argument);
+  // beyond the physical ranges (a fuzz of host mode, 2026-11-28: -1e150 m/s ran to 1.4e151 J of crush)
+  const auto refused = [&](auto&& change) {
+    std::vector<RigidState> bad = {sim.engine().state(0).rigid, sim.engine().state(1).rigid};
+    change(&bad[0]);
+    EXPECT_THROW(sim.HostStep(bad, 0.0005), std::invalid_argument);
+  };
+  refused([](RigidState* r) { r->velocity.x() = -1e150; });
+  refused([](RigidState* r) { r->position.y() = 1e200; });
+  refused([](RigidState* r) { r->yaw = 1e300; });
+  refused([](RigidState* r) { r->omega.z() = 1e4; });
   states[0] = sim.engine().state(0).rigid;
   EXPECT_NO_THROW(sim.HostStep(states, 0.0005));
   sim.FinishHostRun(states);
   EXPECT_THROW(sim.HostStep(states, 0.0005), std::logic_error);
+}
+
+bool HasWarning(const Summary& s, const std::string& code) {
+  for (const RunWarning& w : s.warnings)
+    if (w.code == code) return true;
+  return false;
+}
+
+// a host whose states the contact's work cannot be booked from is marked (found by a fuzz of host mode,
+// 2026-11-28): the side demo's cars held 0.3 m into each other at their speeds for 200 steps (the host
+// integrating nothing) read a perfect energy balance, 0.0, over 28 kJ of crush work; the barrier car
+// pushed 2 mm into the wall each step while reported at rest read no warning at all; a host dt of
+// 0.03 s was judged by the scenario's 0.5 ms step
+TEST(HostMode, AHostWhoseStatesDoNotBookTheWorkIsMarked) {
+  auto device = std::make_shared<const accel::EmbreeDevice>();
+  Scenario side = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/car_to_car_side.json");
+  side.stop_at_separation = false;
+  Simulation held(side, BuildBodyModels(side), accel::MakeEmbreeLocatorFactory(device));
+  std::vector<RigidState> states = {held.engine().state(0).rigid, held.engine().state(1).rigid};
+  const Vec3 into = (states[1].position - states[0].position).normalized();
+  // the same states every step: velocities held, positions held (0 m moved, velocities account for
+  // their v dt: also inconsistent), kinetic energy unchanged
+  states[0].position += 0.3 * into;
+  for (int step = 0; step < 200; ++step) held.HostStep(states, side.time_step);
+  held.FinishHostRun(states);
+  const Summary h = Summarize(held);
+  EXPECT_GT(h.crush_energy, 1000.0);
+  EXPECT_EQ(h.energy_balance_error, -1.0);  // work with no kinetic energy lost
+  EXPECT_TRUE(HasWarning(h, "energy_balance"));
+  EXPECT_TRUE(HasWarning(h, "host_motion_inconsistent"));
+  // at rest, pushed 2 mm a step: moved 2 mm where the velocities account for none
+  Scenario barrier = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json");
+  Simulation pushed(barrier, BuildBodyModels(barrier), accel::MakeEmbreeLocatorFactory(device));
+  states = {pushed.engine().state(0).rigid, pushed.engine().state(1).rigid};
+  states[0].velocity.setZero();
+  for (int step = 0; step < 20; ++step) {
+    pushed.HostStep(states, barrier.time_step);
+    states[0].position.x() += 0.002;
+  }
+  pushed.FinishHostRun(states);
+  const HostMotionMismatch& m = pushed.host_motion_mismatch();
+  EXPECT_EQ(m.body, 0);
+  EXPECT_NEAR(m.moved, 0.002, 1e-12);
+  EXPECT_EQ(m.accounted, 0.0);
+  EXPECT_TRUE(HasWarning(Summarize(pushed), "host_motion_inconsistent"));
+  // a coarse host step is judged as the scenario's would be; a host that integrates its loads with
+  // the engine's own host (SameRunAsTheEnginesOwnHost) is not warned of its motion
+  barrier.time_step = 0.03;
+  barrier.duration = 0.3;
+  Simulation coarse(LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json"),
+                    BuildBodyModels(barrier), accel::MakeEmbreeLocatorFactory(device));
+  RunAsHost(&coarse, barrier.time_step, 10);
+  const Summary c = Summarize(coarse);
+  EXPECT_EQ(coarse.largest_step(), 0.03);
+  EXPECT_TRUE(HasWarning(c, "time_step_coarse"));
+  EXPECT_TRUE(HasWarning(c, "step_beyond_search_reach"));
+  EXPECT_FALSE(HasWarning(c, "host_motion_inconsistent"));
 }
 
 TEST(HostMode, ContactEngineRefusesMismatchedPosesBadIndicesNonFiniteStatesAndBadSteps) {

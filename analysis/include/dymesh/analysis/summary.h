@@ -78,7 +78,7 @@ struct Summary {
   double crush_energy = 0.0, friction_energy = 0.0;         ///< [J] ledger (work of the applied loads)
   double law_energy = 0.0;            ///< [J] node-law work, all bodies
   double energy_discontinuity = 0.0;  ///< [J] ledger crush work - node-law work
-  double energy_balance_error = 0.0;  ///< (KE lost - crush - friction) / KE lost
+  double energy_balance_error = 0.0;  ///< (KE lost - crush - friction) / KE lost; -1 (+1) for work with none lost
   std::vector<PairSummary> pairs;     ///< every pair that carried a load, in the order their contact began
   /// the main collision: the pair with the largest impulse (-1 without contact); the two fields
   /// below repeat its speeds

@@ -29,6 +29,7 @@ struct BodySample {
 /// One recorded instant.
 struct Sample {
   double time = 0.0;                ///< [s]
+  double step = 0.0;                ///< [s] the step that ended here (the scenario's, or the host's dt); 0 at the start
   std::vector<BodySample> bodies;
 };
 
@@ -53,6 +54,22 @@ inline constexpr double kSeparationWindow = 0.02;
 /// forces, which over 0.2 s change a car's speed by at most about 1.4 m/s (0.7 g); a meeting later
 /// than that is a secondary impact whose path the tyres decide, not this collision's.
 inline constexpr double kSlapHorizon = 0.2;
+
+/// Force-provider mode: a host step over which a body moved other than its velocities say.
+struct HostMotionMismatch {
+  int body = -1;           ///< -1: every step agreed
+  double time = 0.0;       ///< [s] the step's start
+  double moved = 0.0;      ///< [m] how far the host moved the body's CG
+  double accounted = 0.0;  ///< [m] how far its velocities (the step's mean) move it
+  double excess = 0.0;     ///< [m] the difference beyond what any integrator allows
+};
+
+/// Slack of the host-motion comparison [m]: a host's positions may round off or lag by this much.
+inline constexpr double kHostMotionSlack = 1e-3;
+
+/// The largest roll, pitch or yaw a host may give [rad] (a spinning body's angle winds up; beyond
+/// this its sine and cosine lose digits).
+inline constexpr double kMaxHostAngle = 1e4;
 
 /// A run of a scenario; owns everything it touches (no global state).
 class Simulation {
@@ -103,6 +120,10 @@ class Simulation {
   bool separated() const { return separated_; }
   /// True when the last step carried a collision load.
   bool in_contact_at_end() const { return steps_ > 0 && last_contact_time_ == time_; }
+  /// The longest step taken [s]: the scenario's, or the longest dt a host gave (the scenario's before any).
+  double largest_step() const { return largest_step_ > 0.0 ? largest_step_ : scenario_.time_step; }
+  /// Force-provider mode: the host step whose positions its velocities least account for (body -1: all agree).
+  const HostMotionMismatch& host_motion_mismatch() const { return host_motion_; }
   /// The contact period and step limits of the scenario's stiffest pair.
   const TimeStepGuide& time_step_guide() const { return guide_; }
   /// Gap (or overlap) of every pair at t = 0, after place_at_contact.
@@ -117,7 +138,9 @@ class Simulation {
   const std::vector<PairContact>& pair_contacts() const { return pair_contacts_; }
 
  private:
-  void Record(const StepResult* step);
+  void Record(const StepResult* step, double dt = 0.0);
+  void RefuseImpossibleHostState(int body, const RigidState& r) const;
+  void CompareHostMotion(const std::vector<RigidState>& states, double dt);
   bool Integrate(const StepResult& step, double dt);
   void AcceptHostStates(const std::vector<RigidState>& states);
   void NoteContact(const StepResult& step, double dt);
@@ -138,6 +161,9 @@ class Simulation {
   std::unique_ptr<StepResult> host_pending_;  // force-provider mode: the step the host is integrating
   double host_step_ = 0.0;                    // force-provider mode: the step length while it is uniform
   bool host_driven_ = false;                  // force-provider mode: HostStep has run (Advance refused)
+  double host_pending_step_ = 0.0;            // force-provider mode: the length of the step the host is integrating
+  double largest_step_ = 0.0;                 // [s] the longest step taken
+  HostMotionMismatch host_motion_;            // force-provider mode: the worst step of positions against velocities
   TimeStepGuide guide_;
   std::vector<PairPlacement> placements_;
   std::vector<PairContact> pair_contacts_;
