@@ -192,8 +192,8 @@ void Simulation::RefuseImpossibleHostState(int body, const RigidState& r) const 
 void Simulation::CompareHostMotion(const std::vector<RigidState>& states, double dt) {
   // the contact work of a host step is booked from the velocities (at the contact points): a host
   // that moves a body other than its velocities say (a teleport, positions not integrated) leaves
-  // work unbooked. Any integrator moves a body between v_before dt and v_after dt; the trapezoid is
-  // within half their difference of either
+  // work unbooked. A host that integrates its velocities moves a body by their mean over the step
+  // times dt to within their change times dt (semi-implicit Euler: half of it)
   for (std::size_t i = 0; i < states.size(); ++i) {
     const RigidState& before = engine_->state(static_cast<int>(i)).rigid;
     const Vec3 moved = states[i].position - before.position;
