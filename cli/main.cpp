@@ -82,13 +82,21 @@ int Guarded(F&& command) {
 }
 
 // a worker thread count: 1..4096, said in words when refused
-const CLI::Validator kThreadCount(
-    [](std::string& value) -> std::string {
-      int n = 0;
-      const bool number = CLI::detail::lexical_cast(value, n);
-      return number && n >= 1 && n <= 4096 ? "" : "expected a whole number of threads from 1 to 4096, got " + value;
-    },
-    "1..4096");
+// a whole number of `what` from lo to hi, said in words when refused (CLI11's Range called "abc" out of range)
+CLI::Validator WholeNumber(int lo, int hi, const std::string& what) {
+  return CLI::Validator(
+      [=](std::string& value) -> std::string {
+        int n = 0;
+        const bool number = CLI::detail::lexical_cast(value, n);
+        return number && n >= lo && n <= hi ? ""
+                                            : "expected a whole number of " + what + " from " + std::to_string(lo) +
+                                                  " to " + std::to_string(hi) + ", got " + value;
+      },
+      std::to_string(lo) + ".." + std::to_string(hi));
+}
+
+const CLI::Validator kThreadCount = WholeNumber(1, 4096, "threads");
+const CLI::Validator kSampleCount = WholeNumber(1, 10000000, "samples");
 
 }  // namespace
 
@@ -119,7 +127,7 @@ int main(int argc, char** argv) {
   CLI::Option* bench_ensemble =
       bench_cmd->add_option("--ensemble", bench.ensemble, "time an ensemble spec's samples instead of two meshes");
   bench_cmd->add_option("--samples", bench.samples, "ensemble samples timed per thread setting")
-      ->check(CLI::Range(1, 100000))
+      ->check(WholeNumber(1, 100000, "samples"))
       ->needs(bench_ensemble);
   bench_cmd->add_option("--threads", bench.threads, "worker threads for the step timing")->check(kThreadCount);
   CLI::Option* bench_axes =
@@ -135,7 +143,7 @@ int main(int argc, char** argv) {
   ensemble->add_option("spec", ens.spec_path, "ensemble spec JSON file");
   ensemble->add_option("--out", ens.out_dir, "output folder (a re-run resumes it; default: ensemble)");
   ensemble->add_option("--threads", ens.threads, "worker threads (default: all cores); results are identical")->check(kThreadCount);
-  ensemble->add_option("--samples", ens.samples, "number of samples (default: the spec's)")->check(CLI::Range(1, 10000000));
+  ensemble->add_option("--samples", ens.samples, "number of samples (default: the spec's)")->check(kSampleCount);
   ensemble->add_option("--shard", ens.shard, "K/N: run every N-th sample from the K-th (Slurm arrays, GNU parallel; default: 1/1)");
   ensemble->add_option("--sample-time-limit", ens.sample_time_limit,
                        "seconds (wall clock) a sample may run; over it the sample is recorded as timed_out and a resume runs it again")
@@ -157,13 +165,13 @@ int main(int argc, char** argv) {
   replay->add_option("--index", replay_index, "sample index")->required();
   replay->add_option("--out", replay_out, "output folder (default: replay)");
   replay->add_option("--samples", ens.samples, "number of samples, if the ensemble was run with --samples")
-      ->check(CLI::Range(1, 10000000));
+      ->check(kSampleCount);
   CLI::App* merge = ensemble->add_subcommand("merge", "join shard folders into one ensemble");
   merge->add_option("spec", merge_spec, "ensemble spec JSON file")->required();
   merge->add_option("shards", merge_shards, "shard output folders")->required();
   merge->add_option("--out", merge_out, "output folder (default: ensemble)");
   merge->add_option("--samples", ens.samples, "number of samples, if the shards were run with --samples")
-      ->check(CLI::Range(1, 10000000));
+      ->check(kSampleCount);
 
   // command-line mistakes: one human line and exit 2 (help and version exit 0); a mistyped command
   // is named (CLI11 takes it for a stray argument and asks for a command)

@@ -849,8 +849,12 @@ TEST_F(Trust, CommandLineMistakesGetOneHumanLine) {
     command.insert(command.end(), {"--samples", "0"});
     const ProcessResult count = Dymesh(command);
     EXPECT_EQ(count.exit_code, 2) << args[0];
-    EXPECT_TRUE(Has(count.err, "error: --samples: Value 0 not in range 1 to 10000000")) << count.err;
+    EXPECT_TRUE(Has(count.err, "error: --samples: expected a whole number of samples from 1 to 10000000, got 0")) << count.err;
   }
+  // (2026-11-28) a word where a count goes was called out of range
+  const ProcessResult word = Dymesh({"ensemble", "spec.json", "--samples", "abc"});
+  EXPECT_EQ(word.exit_code, 2);
+  EXPECT_TRUE(Has(word.err, "error: --samples: expected a whole number of samples from 1 to 10000000, got abc")) << word.err;
   const ProcessResult shard = Dymesh({"ensemble", DYMESH_DATA_DIR "/ensembles/p406_oblique.json", "--shard", "", "--out",
                                       (dir_ / "shard").string()});
   EXPECT_EQ(shard.exit_code, 2);
