@@ -116,11 +116,6 @@ struct Body {
   const dymesh::Simulation& sim() const { return run.cast<const Run&>().sim(); }
 };
 
-// a finished run takes no more steps (the C ABI's DM_ERROR_STATE)
-void RequireRunning(const Run& run) {
-  if (run.sim().finished()) throw std::logic_error("the run is finished (at " + std::to_string(run.sim().time()) + " s)");
-}
-
 // a Python str may hold a NUL, which a file name cannot: the path would be cut short at it
 void RefuseNul(const std::string& path, const char* argument) {
   if (path.find('\0') != std::string::npos)
@@ -206,7 +201,6 @@ PYBIND11_MODULE(dymesh, m) {
   py::class_<Run>(m, "Run", "A scenario run: world mode (run, step) or force-provider mode (host_step).")
       .def("run", [](py::object self) {
              Run& r = self.cast<Run&>();
-             RequireRunning(r);
              // Ctrl-C (or any signal Python handles) stops the run between steps, its state consistent
              // and unfinished (status "interrupted"), and raises there (KeyboardInterrupt)
              bool signalled = false;
@@ -216,7 +210,7 @@ PYBIND11_MODULE(dymesh, m) {
            }, "Runs to the end (duration or separation); returns the run. StateError for a finished or host-driven "
               "run; a Ctrl-C stops it between steps (KeyboardInterrupt; the run stays unfinished, status "
               "\"interrupted\").")
-      .def("step", [](Run& r) { RequireRunning(r); r.sim().Advance(); return r.sim().finished(); },
+      .def("step", [](Run& r) { r.sim().Advance(); return r.sim().finished(); },
            "One step; True once the run has ended. StateError for a finished or host-driven run.")
       .def_property_readonly("time", [](const Run& r) { return r.sim().time(); })
       .def_property_readonly("finished", [](const Run& r) { return r.sim().finished(); })

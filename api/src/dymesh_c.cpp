@@ -28,10 +28,11 @@
 
 struct dm_world {
   std::unique_ptr<dymesh::Simulation> sim;
-  // views stay valid until the world changes: the summary handed out is made again only after a
-  // step, a run or a host step (counted by revision)
+  // views stay valid until the world changes: the summary handed out is made again only once the
+  // run has stepped or finished since
   std::string summary_text;
-  std::uint64_t revision = 0, summary_revision = 0;
+  int summary_steps = -1;
+  bool summary_finished = false;
 };
 
 namespace {
@@ -108,11 +109,6 @@ std::vector<RigidState> States(const dm_world* w, const dm_body_state* states, i
   return out;
 }
 
-// a finished run takes no more steps (DM_ERROR_STATE)
-void RequireRunning(const dm_world& w) {
-  if (w.sim->finished()) throw std::logic_error("the run is finished (at " + std::to_string(w.sim->time()) + " s)");
-}
-
 dymesh::LocatorFactory Locators() {
   return dymesh::accel::MakeEmbreeLocatorFactory(std::make_shared<const dymesh::accel::EmbreeDevice>());
 }
@@ -163,8 +159,6 @@ dm_status dm_world_create(const dm_world_desc* desc, const dm_body_desc* bodies,
 dm_status dm_world_run(dm_world* w) {
   return Guarded("dm_world_run", [&] {
     NotNull(w, "world");
-    RequireRunning(*w);
-    ++w->revision;
     w->sim->Run();
   });
 }
@@ -174,8 +168,6 @@ dm_status dm_world_step(dm_world* w, int32_t* finished) {
     NotNull(w, "world");
     NotNull(finished, "finished");
     *finished = w->sim->finished() ? 1 : 0;
-    RequireRunning(*w);
-    ++w->revision;
     w->sim->Advance();
     *finished = w->sim->finished() ? 1 : 0;
   });
@@ -284,9 +276,10 @@ dm_status dm_world_summary_json(dm_world* w, const char** out_text) {
     NotNull(w, "world");
     NotNull(out_text, "out_text");
     const dymesh::Simulation& sim = *w->sim;
-    if (w->summary_text.empty() || w->summary_revision != w->revision) {
+    if (w->summary_steps != sim.steps() || w->summary_finished != sim.finished()) {
       w->summary_text = dymesh::SummaryJson(dymesh::Summarize(sim), sim.scenario(), dymesh::OutputFileNames(sim.scenario()));
-      w->summary_revision = w->revision;
+      w->summary_steps = sim.steps();
+      w->summary_finished = sim.finished();
     }
     *out_text = w->summary_text.c_str();
   });
@@ -340,7 +333,6 @@ dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t c
     NotNull(w, "world");
     NotNull(out_loads, "out_loads");
     Require(dt > 0.0 && dt <= dymesh::kDurationRange.hard_hi, "dt: expected a step > 0 and at most 1e4 s");
-    ++w->revision;
     const dymesh::StepResult step = w->sim->HostStep(States(w, states, count), dt);
     for (int i = 0; i < count; ++i)
       for (int k = 0; k < 3; ++k) {
@@ -354,7 +346,6 @@ dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t c
 dm_status dm_world_host_finish(dm_world* w, const dm_body_state* states, int32_t count) {
   return Guarded("dm_world_host_finish", [&] {
     NotNull(w, "world");
-    ++w->revision;
     w->sim->FinishHostRun(States(w, states, count));
   });
 }

@@ -282,15 +282,20 @@ MeshStats ComputeStats(const TriMesh& mesh) {
   return s;
 }
 
+PointBounds BoundsOf(const std::vector<Vec3>& points) {
+  PointBounds b;
+  for (const Vec3& p : points) {
+    b.lo = b.lo.cwiseMin(p);
+    b.hi = b.hi.cwiseMax(p);
+  }
+  return b;
+}
+
 double SignedVolume(const TriMesh& mesh) {
   if (mesh.vertices.empty()) return 0.0;
   // about the bounds centre: exact for closed meshes, a meaningful sign for open shells
-  Vec3 lo = mesh.vertices.front(), hi = lo;
-  for (const Vec3& p : mesh.vertices) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return SignedVolumeAbout(mesh, 0.5 * (lo + hi));
+  const PointBounds b = BoundsOf(mesh.vertices);
+  return SignedVolumeAbout(mesh, 0.5 * (b.lo + b.hi));
 }
 
 double SignedVolumeAbout(const TriMesh& mesh, const Vec3& point) {

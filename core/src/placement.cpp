@@ -136,7 +136,11 @@ double DirectedGap(const PosedBody& mover, const PosedBody& target, const Vec3& 
   for (const Vec3& vertex : mover.model->mesh.vertices)
     at.push_back(target.rotation.transpose() * (mover.pose->position + mover.rotation * vertex - target.pose->position));
   for (const Vec3& q : at) probe(q);
-  // an edge through the target's surface: the middle of each stretch between two crossings
+  // an edge through the target's surface: the middle of each stretch between two crossings (none
+  // while the mover's bounds stay clear of the target's: no grid built for bodies that start apart)
+  const PointBounds mover_box = BoundsOf(at), target_box = BoundsOf(target.model->mesh.vertices);
+  if ((mover_box.lo.array() > target_box.hi.array()).any() || (mover_box.hi.array() < target_box.lo.array()).any())
+    return depth > 0.0 ? -depth : gap;
   const SegmentGrid surface(target.model->mesh);
   for (const auto& e : Edges(mover.model->mesh)) {
     const std::vector<double> s = surface.Crossings(at[e[0]], at[e[1]]);

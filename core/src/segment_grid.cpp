@@ -8,19 +8,16 @@
 namespace dymesh {
 
 SegmentGrid::SegmentGrid(const TriMesh& mesh) : mesh_(mesh) {
-  lo_ = Vec3::Constant(INFINITY);
-  hi_ = Vec3::Constant(-INFINITY);
-  for (const Vec3& p : mesh.vertices) {
-    lo_ = lo_.cwiseMin(p);
-    hi_ = hi_.cwiseMax(p);
-  }
+  const PointBounds bounds = BoundsOf(mesh.vertices);
+  lo_ = bounds.lo;
+  hi_ = bounds.hi;
   // about one triangle per cell of the bounds (a flat body: cells of its area)
   const Vec3 size = (hi_ - lo_).cwiseMax(1e-9);
   const double count = static_cast<double>(std::max<std::size_t>(1, mesh.triangles.size()));
   const Vec3 sorted = [&] { Vec3 s = size; std::sort(s.data(), s.data() + 3); return s; }();
   cell_ = std::max(std::cbrt(size.prod() / count), std::sqrt(sorted[1] * sorted[2] / count));
   for (int k = 0; k < 3; ++k) dims_[k] = static_cast<int>(size[k] / cell_) + 1;
-  off_plane_ = 1e-9 * (1.0 + size.norm());
+  off_plane_ = kSegmentSlack * (1.0 + size.norm());
   // triangles into every cell their bounds touch: counted, then placed (cell-major)
   const std::size_t cells = static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2];
   auto each_cell = [&](int t, auto&& visit) {

@@ -37,12 +37,11 @@ bool Simulation::Run(const std::function<bool(double)>& on_step) {
 }
 
 bool Simulation::Advance() {
-  if (finished_) return false;
+  if (finished_) throw std::logic_error("the run is finished (at " + std::to_string(time_) + " s)");
   // one run, one integrator: the host's steps and this one's would each miss the other's motion
   if (host_driven_) throw std::logic_error("the run is host-driven (HostStep): it takes no step of its own");
   const double dt = scenario_.time_step;
   // contact step at the current poses, then the rigid-body host integrates every body
-  largest_step_ = dt;
   const StepResult step = engine_->Step(dt);
   if (!Integrate(step, dt)) {
     // a non-finite pose or velocity: keep the last finite state and stop
@@ -134,7 +133,6 @@ StepResult Simulation::HostStep(const std::vector<RigidState>& states, double dt
   AcceptHostStates(states);
   host_driven_ = true;
   host_pending_step_ = dt;
-  largest_step_ = std::max(largest_step_, dt);
   // the contact step at the host's poses; the host integrates its loads
   StepResult step = engine_->Step(dt);
   diagnostics_.Add(step.diagnostics);
@@ -174,6 +172,13 @@ void Simulation::AcceptHostStates(const std::vector<RigidState>& states) {
   }
 }
 
+double Simulation::largest_step() const {
+  // each recorded step's own length (0 for the start): the scenario's before any
+  double largest = 0.0;
+  for (const Sample& s : history_) largest = std::max(largest, s.step);
+  return largest > 0.0 ? largest : scenario_.time_step;
+}
+
 void Simulation::RefuseImpossibleHostState(int body, const RigidState& r) const {
   // finite, and within the physical ranges a scenario's initial state has (README Physical ranges);
   // angles may wind (a spinning body's yaw), but not past where their sines lose digits
@@ -198,7 +203,8 @@ void Simulation::CompareHostMotion(const std::vector<RigidState>& states, double
     const RigidState& before = engine_->state(static_cast<int>(i)).rigid;
     const Vec3 moved = states[i].position - before.position;
     const Vec3 accounted = 0.5 * (before.velocity + states[i].velocity) * dt;
-    const double allowed = kHostMotionSlack + 0.01 * accounted.norm() + (states[i].velocity - before.velocity).norm() * dt;
+    const double allowed = kHostMotionSlack + kHostMotionRelativeSlack * accounted.norm() +
+                           (states[i].velocity - before.velocity).norm() * dt;
     const double excess = (moved - accounted).norm() - allowed;
     if (excess > 0.0 && excess > host_motion_.excess)
       host_motion_ = HostMotionMismatch{static_cast<int>(i), time_, moved.norm(), accounted.norm(), excess};

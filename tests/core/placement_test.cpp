@@ -79,6 +79,15 @@ TEST(Placement, SurfacesThatCrossWithNoVertexInsideOverlap) {
   Scenario swapped = s;
   std::swap(swapped.bodies[0], swapped.bodies[1]);
   EXPECT_NEAR(MeasurePlacements(swapped, BuildBodyModels(swapped))[0].gap / u::kInch, -110.0, 1e-9);
+  // the scene turned 30 deg about the vertical (poses and velocity): the same overlap
+  Scenario turned = s;
+  const Mat3 r = Eigen::AngleAxisd(30.0 * u::kDegree, Vec3::UnitZ()).toRotationMatrix();
+  for (BodySpec& b : turned.bodies) {
+    b.initial.position = r * b.initial.position;
+    b.initial.velocity = r * b.initial.velocity;
+    b.initial.yaw += 30.0 * u::kDegree;
+  }
+  EXPECT_NEAR(MeasurePlacements(turned, models)[0].gap / u::kInch, -110.0, 1e-9);
   try {
     PlaceBodies(&s, models);
     ADD_FAILURE() << "the overlap was not refused";

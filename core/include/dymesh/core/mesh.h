@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,12 @@ TriMesh Subdivide(const TriMesh& mesh);
 /// A closed box centred at the origin, `length` x `width` x `height` along x, y, z, with
 /// `nx`, `ny`, `nz` grid segments along each axis; welded, outward normals.
 TriMesh MakeBox(double length, double width, double height, int nx, int ny, int nz);
+
+/// Axis-aligned bounds of points (lo = +inf, hi = -inf for none).
+struct PointBounds {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+};
+PointBounds BoundsOf(const std::vector<Vec3>& points);
 
 /// Vertex, triangle, edge and bounds statistics.
 MeshStats ComputeStats(const TriMesh& mesh);

@@ -64,8 +64,10 @@ struct HostMotionMismatch {
   double excess = 0.0;     ///< [m] the difference beyond what any integrator allows
 };
 
-/// Slack of the host-motion comparison [m]: a host's positions may round off or lag by this much.
+/// Slack of the host-motion comparison: a host's positions may round off or lag by this much [m], and
+/// by this part of the distance its velocities account for (an integrator's own error, e.g. RK4's).
 inline constexpr double kHostMotionSlack = 1e-3;
+inline constexpr double kHostMotionRelativeSlack = 0.01;
 
 /// The largest roll, pitch or yaw a host may give [rad] (a spinning body's angle winds up; beyond
 /// this its sine and cosine lose digits).
@@ -83,10 +85,12 @@ class Simulation {
              const LocatorFactory& make_locator);
 
   /// Runs to the scenario's duration (or separation). `on_step(time)` is called after each step;
-  /// returning false stops the run there. Returns true when the run reached its end.
+  /// returning false stops the run there. Returns true when the run reached its end. Throws
+  /// std::logic_error for a finished or a host-driven run.
   bool Run(const std::function<bool(double)>& on_step = {});
 
-  /// Advances one step; returns false once finished. Throws std::logic_error for a host-driven run.
+  /// Advances one step; returns false once finished. Throws std::logic_error for a finished or a
+  /// host-driven run.
   bool Advance();
 
   /// Force-provider mode (how DyMESH sits inside a host's own vehicle dynamics, as in HVE's SIMON):
@@ -121,7 +125,7 @@ class Simulation {
   /// True when the last step carried a collision load.
   bool in_contact_at_end() const { return steps_ > 0 && last_contact_time_ == time_; }
   /// The longest step taken [s]: the scenario's, or the longest dt a host gave (the scenario's before any).
-  double largest_step() const { return largest_step_ > 0.0 ? largest_step_ : scenario_.time_step; }
+  double largest_step() const;
   /// Force-provider mode: the host step whose positions its velocities least account for (body -1: all agree).
   const HostMotionMismatch& host_motion_mismatch() const { return host_motion_; }
   /// The contact period and step limits of the scenario's stiffest pair.
@@ -162,7 +166,6 @@ class Simulation {
   double host_step_ = 0.0;                    // force-provider mode: the step length while it is uniform
   bool host_driven_ = false;                  // force-provider mode: HostStep has run (Advance refused)
   double host_pending_step_ = 0.0;            // force-provider mode: the length of the step the host is integrating
-  double largest_step_ = 0.0;                 // [s] the longest step taken
   HostMotionMismatch host_motion_;            // force-provider mode: the worst step of positions against velocities
   TimeStepGuide guide_;
   std::vector<PairPlacement> placements_;
