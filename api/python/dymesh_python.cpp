@@ -234,7 +234,8 @@ PYBIND11_MODULE(dymesh, m) {
       }, py::arg("states"), "Ends a host-driven run with the states reached after the last step.")
       .def("write_outputs", [](const Run& r, const std::string& dir) {
         RefuseNul(dir, "dir");
-        dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(r.sim().scenario()), dymesh::InputFiles(r.sim().scenario()));
+        dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(r.sim().scenario()), dymesh::InputFiles(r.sim().scenario()),
+                                    "dir");
         folder.ReplacePreviousRun();
         dymesh::WriteOutputs(r.sim(), dymesh::Summarize(r.sim()), dir);
       }, py::arg("dir"), "Writes meshes, history.csv, report.html and summary.json into `dir`.");

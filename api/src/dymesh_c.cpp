@@ -299,16 +299,19 @@ dm_status dm_world_copy_summary_json(dm_world* w, char* buffer, size_t size, siz
 }
 
 dm_status dm_world_write_outputs(dm_world* w, const char* dir) {
+  bool folder_taken = false;
   const dm_status s = Guarded("dm_world_write_outputs", [&] {
     NotNull(w, "world");
     NotNull(dir, "dir");
+    Require(*dir != '\0', "dir: expected a folder name, got \"\"");
     const dymesh::Simulation& sim = *w->sim;
-    dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(sim.scenario()), dymesh::InputFiles(sim.scenario()));
+    dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(sim.scenario()), dymesh::InputFiles(sim.scenario()), "dir");
+    folder_taken = true;
     folder.ReplacePreviousRun();
     dymesh::WriteOutputs(sim, dymesh::Summarize(sim), dir);
   });
-  // a write that failed is an I/O failure, not an internal one
-  return s == DM_ERROR_INTERNAL ? DM_ERROR_IO : s;
+  // a folder that cannot take the outputs, or a write that failed, is an I/O failure
+  return s == DM_ERROR_INTERNAL || (s == DM_ERROR_INPUT && !folder_taken) ? DM_ERROR_IO : s;
 }
 
 dm_status dm_world_state_hash(const dm_world* w, uint64_t* out) {

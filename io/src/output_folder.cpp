@@ -22,7 +22,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-[[noreturn]] void Refuse(const std::string& dir, const std::string& why) { throw InputError(dir, "--out", why); }
+// the checks below name the folder's field as the command line's; OutputFolder names its own
+constexpr const char* kOutField = "--out";
+
+[[noreturn]] void Refuse(const std::string& dir, const std::string& why) { throw InputError(dir, kOutField, why); }
+
+// a refusal `e` of the checks below, the folder named as `field` instead
+InputError AsField(const InputError& e, const std::string& field) {
+  const std::string why = std::string(e.what()).substr(e.file().size() + e.field().size() + 4);
+  return InputError(e.file(), field, why);
+}
 
 // dir as an absolute path without "." or "..", nor a trailing slash
 fs::path AbsoluteFolder(const std::string& dir) {
@@ -46,7 +55,7 @@ std::string EnsureFolder(const std::string& dir) {
     return outermost.string();
   }
   if (ec) Refuse(dir, "cannot inspect the output folder: " + ec.message());
-  if (status.type() != fs::file_type::directory) Refuse(dir, "exists and is not a folder: give a folder for --out");
+  if (status.type() != fs::file_type::directory) Refuse(dir, "exists and is not a folder: give a folder");
   return "";
 }
 
@@ -93,7 +102,7 @@ void CheckNames(const std::string& dir, const std::vector<std::string>& names) {
     const std::size_t path = (fs::path(dir) / name).string().size() + kTemporaryNameExtra;
     if (path >= PATH_MAX)
       Refuse(dir, "the path of output \"" + name + "\" (with the temporary suffix) is " + std::to_string(path) +
-                      " bytes; the system allows " + std::to_string(PATH_MAX - 1) + ": give a shorter --out");
+                      " bytes; the system allows " + std::to_string(PATH_MAX - 1) + ": give a shorter folder path");
   }
 }
 
@@ -173,18 +182,24 @@ void RefuseOtherKind(const std::string& dir, const std::vector<std::string>& out
 
 }  // namespace
 
-OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs, std::vector<std::string> inputs)
-    : dir_(dir), outputs_(std::move(outputs)), inputs_(std::move(inputs)) {
-  if (dir_.empty()) throw InputError("command line", "--out", "expected a folder name, got \"\"");
+OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> outputs, std::vector<std::string> inputs,
+                           std::string field)
+    : dir_(dir), outputs_(std::move(outputs)), inputs_(std::move(inputs)), field_(std::move(field)) {
+  const std::string source = field_ == kOutField ? "command line" : "argument";
+  if (dir_.empty()) throw InputError(source, field_, "expected a folder name, got \"\"");
   // a library caller's string may hold a NUL, which would cut the path short
   if (dir_.find('\0') != std::string::npos)
-    throw InputError("command line", "--out", "expected a folder name without a NUL character, got \"" + Printable(dir_) + "\"");
-  created_ = EnsureFolder(dir_);
+    throw InputError(source, field_, "expected a folder name without a NUL character, got \"" + Printable(dir_) + "\"");
   try {
-    TakeFolder();
-  } catch (...) {
-    if (!created_.empty()) RemoveIfUnused(dir_, created_);
-    throw;
+    created_ = EnsureFolder(dir_);
+    try {
+      TakeFolder();
+    } catch (...) {
+      if (!created_.empty()) RemoveIfUnused(dir_, created_);
+      throw;
+    }
+  } catch (const InputError& e) {
+    throw AsField(e, field_);
   }
 }
 
@@ -201,7 +216,7 @@ void OutputFolder::TakeFolder() {
   if (flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
     close(lock_fd_);
     lock_fd_ = -1;
-    throw OutputFolderBusy(dir_ + ": --out: another dymesh run is writing into this folder (it holds " + lock +
+    throw OutputFolderBusy(dir_ + ": " + field_ + ": another dymesh run is writing into this folder (it holds " + lock +
                            "): wait for it to finish or choose another folder");
   }
   // what is in the folder, once no other run changes it

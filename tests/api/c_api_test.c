@@ -103,6 +103,12 @@ static void test_world_mode(const char* scenario, const char* cli, const char* w
   free(crush);
   snprintf(path, sizeof path, "%s/abi", work);
   CHECK(dm_world_write_outputs(w, path) == DM_OK);
+  /* a folder that cannot take the outputs is an I/O failure naming the parameter (not the command
+     line's --out); a file given as the folder is left as it was */
+  snprintf(path, sizeof path, "%s/abi/summary.json", work);
+  CHECK(dm_world_write_outputs(w, path) == DM_ERROR_IO && contains(dm_last_error(), "summary.json: dir: exists and is not a folder") &&
+        !contains(dm_last_error(), "--out"));
+  CHECK(dm_world_write_outputs(w, "") == DM_ERROR_ARGUMENT && contains(dm_last_error(), "dir: expected a folder name"));
   dm_world_destroy(w);
 }
 

@@ -779,7 +779,7 @@ TEST_F(Trust, OutPathTooLongForTheSystemIsRefusedBeforeRunning) {
   const ProcessResult r = Dymesh({"run", Write("s.json", BoxScenario().dump()), "--quiet", "--out", out.string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_TRUE(Has(r.err, "--out: the path of output \"car_undeformed.obj\" (with the temporary suffix) is ")) << r.err;
-  EXPECT_TRUE(Has(r.err, ": give a shorter --out")) << r.err;
+  EXPECT_TRUE(Has(r.err, ": give a shorter folder path")) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / std::string(200, 'd')));
 }
 

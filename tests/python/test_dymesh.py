@@ -155,6 +155,12 @@ class RunState(unittest.TestCase):
             with self.assertRaisesRegex(ValueError, "dir: a file name cannot hold a NUL character"):
                 run.write_outputs(os.path.join(out, "a\0b"))
             self.assertEqual(os.listdir(out), [])
+            # a folder that cannot take the outputs is named by the parameter, not the command line's --out
+            taken = os.path.join(out, "taken")
+            open(taken, "w").close()
+            with self.assertRaisesRegex(dymesh.InputError, "taken: dir: exists and is not a folder") as refused:
+                run.write_outputs(taken)
+            self.assertNotIn("--out", str(refused.exception))
 
 
 class ForceProvider(unittest.TestCase):

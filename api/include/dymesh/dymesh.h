@@ -176,7 +176,10 @@ DM_API dm_status dm_world_summary_json(dm_world* w, const char** out_text);
  *  size required (length + 1). DM_ERROR_ARGUMENT when it does not fit. */
 DM_API dm_status dm_world_copy_summary_json(dm_world* w, char* buffer, size_t size, size_t* needed);
 
-/** Writes the run's outputs (meshes, history.csv, report.html, summary.json) into `dir`. */
+/** Writes the run's outputs (meshes, history.csv, report.html, summary.json) into `dir` (created when
+ *  missing). DM_ERROR_IO when the folder cannot take them (not a folder, not writable, holding files
+ *  no dymesh run wrote or another run's lock: the message names `dir` and why) or a write fails; a
+ *  refused folder is left as it was. DM_ERROR_ARGUMENT for a null or empty `dir`. */
 DM_API dm_status dm_world_write_outputs(dm_world* w, const char* dir);
 
 /** A hash of every body's final state (rigid state and vertices), equal at any thread count. */

@@ -23,9 +23,11 @@ class OutputFolder {
   /// (plain file names) fits its name and path limits with the temporary suffix, and that no output
   /// would replace one of `inputs` (the files the run reads), a file that is not a regular file (a
   /// FIFO would block the run), or a file no earlier dymesh run wrote (not in its manifest), and
-  /// takes an exclusive lock on it. Throws InputError (field "--out") naming the folder, the file and
-  /// the reason, or OutputFolderBusy when another run holds it.
-  OutputFolder(const std::string& dir, std::vector<std::string> outputs, std::vector<std::string> inputs = {});
+  /// takes an exclusive lock on it. Throws InputError naming the folder, `field` (the argument the
+  /// folder was given as: the command line's "--out", a library call's parameter), the file and the
+  /// reason, or OutputFolderBusy when another run holds it.
+  OutputFolder(const std::string& dir, std::vector<std::string> outputs, std::vector<std::string> inputs = {},
+               std::string field = "--out");
   ~OutputFolder();  ///< releases the lock; removes the folder if it created it and nothing but the lock is in it
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
@@ -51,6 +53,7 @@ class OutputFolder {
 
   std::string dir_;
   std::vector<std::string> outputs_, inputs_;
+  std::string field_;
   std::string created_;  // the outermost folder this run created (empty: the folder existed)
   int lock_fd_ = -1;
 };
