@@ -69,6 +69,17 @@ BodyInside DeepestBodyInside(const Simulation& sim, const PairSummary& p, const 
   return out;
 }
 
+// the first of the samples over the run's last separation window, by their times (in force-provider
+// mode each step is the host's dt, not the scenario's), at least one step back; -1 when the run is
+// shorter than the window
+long WindowStart(const std::vector<Sample>& h) {
+  const double end = h.back().time, slack = 1e-9 * kSeparationWindow;  // the times' round-off
+  if (end - h.front().time < kSeparationWindow - slack) return -1;
+  long k = static_cast<long>(h.size()) - 1;
+  while (k > 0 && end - h[k - 1].time <= kSeparationWindow + slack) --k;
+  return std::min(k, static_cast<long>(h.size()) - 2);
+}
+
 // in contact at the end but at rest: every pair's relative speed small and the load not growing
 // over the last separation window
 bool AtRestInContact(const Simulation& sim) {
@@ -78,9 +89,9 @@ bool AtRestInContact(const Simulation& sim) {
     for (int b = a + 1; b < n; ++b)
       if ((sim.engine().state(a).rigid.velocity - sim.engine().state(b).rigid.velocity).norm() > kRestSpeed)
         return false;
-  const int window = std::max(1, static_cast<int>(kSeparationWindow / sim.scenario().time_step));
-  if (static_cast<int>(h.size()) <= window) return false;
-  return TotalLoad(h.back()) <= TotalLoad(h[h.size() - 1 - window]) * (1.0 + 1e-9);
+  const long start = WindowStart(h);
+  if (start < 0) return false;
+  return TotalLoad(h.back()) <= TotalLoad(h[start]) * (1.0 + 1e-9);
 }
 
 // kinetic energy of the bodies' motion relative to each other at the first recorded step [J]: in the
@@ -128,11 +139,11 @@ NodeOutside FarthestOutsideRestBounds(const MeshStats& rest, const BodyState& st
 // its 20,000). A touch that began within the window may be a new impact's start: not light
 bool LightContactAtEnd(const Simulation& sim) {
   const auto& h = sim.history();
-  const int window = std::max(1, static_cast<int>(kSeparationWindow / sim.scenario().time_step));
-  if (static_cast<int>(h.size()) <= window) return false;
+  const long start = WindowStart(h);
+  if (start < 0) return false;
   double peak = 0.0;
   for (const Sample& sample : h) peak = std::max(peak, TotalLoad(sample));
-  for (std::size_t k = h.size() - 1 - window; k < h.size(); ++k)
+  for (std::size_t k = start; k < h.size(); ++k)
     if (!(TotalLoad(h[k]) > 0.0 && TotalLoad(h[k]) <= kLightContactShare * peak)) return false;
   return true;
 }
@@ -202,10 +213,10 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
   // force-provider mode: a host that moved a body other than its velocities say
   if (const HostMotionMismatch& m = sim.host_motion_mismatch(); m.body >= 0)
     w->push_back({"host_motion_inconsistent", "",
-                  Text("the host moved \"%s\" %.3g m over the host step ending at t = %.4f s, where its velocities account for "
-                       "%.3g m: positions and velocities disagree (a teleport, or positions not integrated from "
-                       "the velocities); the contact work is booked from the velocities, so the energy account "
-                       "and the crush energies do not hold",
+                  Text("the host moved \"%s\" %.3g m (its farthest point) over the host step ending at t = %.4f s, where "
+                       "its velocities and angular rates account for %.3g m: poses and velocities disagree (a "
+                       "teleport, or positions or angles not integrated from the velocities); the contact work "
+                       "is booked from the velocities, so the energy account and the crush energies do not hold",
                        sc.bodies[m.body].name.c_str(), m.moved, m.time, m.accounted)});
   // each body's rest mesh: its extent, and whether it is closed
   std::vector<MeshStats> rest_stats;
