@@ -22,6 +22,11 @@ Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<con
     initial.push_back(b.initial);
     rest_height_.push_back(b.initial.position.z());
   }
+  for (const auto& m : models) {
+    double farthest = 0.0;
+    for (const Vec3& p : m->mesh.vertices) farthest = std::max(farthest, p.norm());
+    reach_.push_back(farthest);
+  }
   engine_ = std::make_unique<ContactEngine>(std::move(models), initial, scenario_.contact, make_locator);
   for (std::size_t i = 0; i < scenario_.bodies.size(); ++i)
     engine_->SetMotion(static_cast<int>(i), scenario_.bodies[i].motion);
@@ -195,19 +200,28 @@ void Simulation::RefuseImpossibleHostState(int body, const RigidState& r) const 
 }
 
 void Simulation::CompareHostMotion(const std::vector<RigidState>& states, double dt) {
-  // the contact work of a host step is booked from the velocities (at the contact points): a host
-  // that moves a body other than its velocities say (a teleport, positions not integrated) leaves
-  // work unbooked. A host that integrates its velocities moves a body by their mean over the step
-  // times dt to within their change times dt (semi-implicit Euler: half of it)
+  // the contact work of a host step is booked from the velocities and angular rates (at the contact
+  // points): a host that moves or turns a body other than they say (a teleport, positions or angles
+  // not integrated) leaves work unbooked. A host that integrates them moves a body by their mean over
+  // the step times dt to within their change times dt (semi-implicit Euler: half of it). Each body is
+  // judged at its farthest point: its CG's motion plus its turn times the farthest vertex's distance
   for (std::size_t i = 0; i < states.size(); ++i) {
     const RigidState& before = engine_->state(static_cast<int>(i)).rigid;
-    const Vec3 moved = states[i].position - before.position;
-    const Vec3 accounted = 0.5 * (before.velocity + states[i].velocity) * dt;
-    const double allowed = kHostMotionSlack + kHostMotionRelativeSlack * accounted.norm() +
-                           (states[i].velocity - before.velocity).norm() * dt;
-    const double excess = (moved - accounted).norm() - allowed;
+    const RigidState& after = states[i];
+    const double r = reach_[i];
+    const Vec3 moved = after.position - before.position;
+    const Vec3 accounted = 0.5 * (before.velocity + after.velocity) * dt;
+    // the turn over the step and the one the rates account for, as rotation vectors in the body frame
+    const Eigen::AngleAxisd turn(Mat3(before.Rotation().transpose() * after.Rotation()));
+    const Vec3 turned = turn.angle() * turn.axis();
+    const Vec3 turn_accounted = 0.5 * (before.omega + after.omega) * dt;
+    const double accounted_reach = accounted.norm() + turn_accounted.norm() * r;
+    const double allowed = kHostMotionSlack + kHostMotionRelativeSlack * accounted_reach +
+                           ((after.velocity - before.velocity).norm() + (after.omega - before.omega).norm() * r) * dt;
+    const double excess = (moved - accounted).norm() + (turned - turn_accounted).norm() * r - allowed;
     if (excess > 0.0 && excess > host_motion_.excess)
-      host_motion_ = HostMotionMismatch{static_cast<int>(i), time_, moved.norm(), accounted.norm(), excess};
+      host_motion_ = HostMotionMismatch{static_cast<int>(i), time_, moved.norm() + turned.norm() * r, accounted_reach,
+                                        excess};
   }
 }
 

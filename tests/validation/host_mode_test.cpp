@@ -113,7 +113,8 @@ bool HasWarning(const Summary& s, const std::string& code) {
 // a host whose states the contact's work cannot be booked from is marked (found by a fuzz of host mode,
 // 2026-11-28): the side demo's cars held 0.3 m into each other at their speeds for 200 steps (the host
 // integrating nothing) read a perfect energy balance, 0.0, over 28 kJ of crush work; the barrier car
-// pushed 2 mm into the wall each step while reported at rest read no warning at all; a host dt of
+// pushed 2 mm into the wall each step while reported at rest read no warning at all (nor, until the
+// turn was compared too, one turned 0.01 rad a step while reported not turning); a host dt of
 // 0.03 s was judged by the scenario's 0.5 ms step
 TEST(HostMode, AHostWhoseStatesDoNotBookTheWorkIsMarked) {
   auto device = std::make_shared<const accel::EmbreeDevice>();
@@ -147,6 +148,24 @@ TEST(HostMode, AHostWhoseStatesDoNotBookTheWorkIsMarked) {
   EXPECT_NEAR(m.moved, 0.002, 1e-12);
   EXPECT_EQ(m.accounted, 0.0);
   EXPECT_TRUE(HasWarning(Summarize(pushed), "host_motion_inconsistent"));
+  // at rest, turned 0.01 rad a step about the vertical while reported not turning (until 2026-11-28
+  // only the CG's motion was compared): its farthest point, r from the CG, moved 0.01 r where the
+  // rates account for none
+  Simulation turned(barrier, BuildBodyModels(barrier), accel::MakeEmbreeLocatorFactory(device));
+  states = {turned.engine().state(0).rigid, turned.engine().state(1).rigid};
+  states[0].velocity.setZero();
+  double r = 0.0;
+  for (const Vec3& p : turned.engine().model(0).mesh.vertices) r = std::max(r, p.norm());
+  for (int step = 0; step < 20; ++step) {
+    turned.HostStep(states, barrier.time_step);
+    states[0].yaw += 0.01;
+  }
+  turned.FinishHostRun(states);
+  const HostMotionMismatch& t = turned.host_motion_mismatch();
+  EXPECT_EQ(t.body, 0);
+  EXPECT_NEAR(t.moved, 0.01 * r, 1e-9 * r);
+  EXPECT_EQ(t.accounted, 0.0);
+  EXPECT_TRUE(HasWarning(Summarize(turned), "host_motion_inconsistent"));
   // a coarse host step is judged as the scenario's would be; a host that integrates its loads with
   // the engine's own host (SameRunAsTheEnginesOwnHost) is not warned of its motion
   barrier.time_step = 0.03;
@@ -159,6 +178,39 @@ TEST(HostMode, AHostWhoseStatesDoNotBookTheWorkIsMarked) {
   EXPECT_TRUE(HasWarning(c, "time_step_coarse"));
   EXPECT_TRUE(HasWarning(c, "step_beyond_search_reach"));
   EXPECT_FALSE(HasWarning(c, "host_motion_inconsistent"));
+}
+
+// the end-of-run windows (at rest in contact: the load not growing over the last 0.02 s; a light touch
+// over the last 0.02 s) are judged over 0.02 s of the host's steps, not over as many steps as the
+// scenario's own step makes 0.02 s (until 2026-11-28: 40 host steps of 2 ms, 0.08 s). The barrier car,
+// held 20 mm into the wall (A), pressed 1.6 mm further at 0.04 m/s (B, under the 0.05 m/s rest speed),
+// then held for 0.03 s (C): over C the load does not grow, so the run came to rest in contact; a
+// window reaching back into A (a lighter press) read a growing load, `ended_in_contact`
+TEST(HostMode, TheEndOfRunWindowsAreJudgedOverTheHostsTime) {
+  Scenario s = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json");
+  Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(std::make_shared<const accel::EmbreeDevice>()));
+  ASSERT_TRUE(sim.placements().at(0).meet);
+  const Vec3 into = sim.placements()[0].direction;
+  std::vector<RigidState> states = {sim.engine().state(0).rigid, sim.engine().state(1).rigid};
+  states[0].velocity.setZero();
+  states[0].position += (sim.placements()[0].gap + 0.020) * into;
+  const double dt = 0.002, press = 0.04;  // [s], [m/s]
+  auto hold = [&](int steps, double speed) {
+    states[0].velocity = speed * into;
+    for (int k = 0; k < steps; ++k) {
+      sim.HostStep(states, dt);
+      states[0].position += speed * dt * into;
+    }
+  };
+  hold(10, 0.0);    // A
+  hold(20, press);  // B
+  hold(15, 0.0);    // C
+  sim.FinishHostRun(states);
+  const Summary summary = Summarize(sim);
+  EXPECT_FALSE(HasWarning(summary, "host_motion_inconsistent"));
+  EXPECT_TRUE(sim.in_contact_at_end());
+  EXPECT_EQ(summary.status, RunStatus::kComplete);
+  EXPECT_TRUE(HasWarning(summary, "at_rest_in_contact"));
 }
 
 TEST(HostMode, ContactEngineRefusesMismatchedPosesBadIndicesNonFiniteStatesAndBadSteps) {

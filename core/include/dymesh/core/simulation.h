@@ -59,8 +59,8 @@ inline constexpr double kSlapHorizon = 0.2;
 struct HostMotionMismatch {
   int body = -1;           ///< -1: every step agreed
   double time = 0.0;       ///< [s] the step's start
-  double moved = 0.0;      ///< [m] how far the host moved the body's CG
-  double accounted = 0.0;  ///< [m] how far its velocities (the step's mean) move it
+  double moved = 0.0;      ///< [m] how far the host moved the body's farthest point: its CG's motion plus its turn times that point's distance from the CG
+  double accounted = 0.0;  ///< [m] the same as its velocities and angular rates (the step's mean) move it
   double excess = 0.0;     ///< [m] the difference beyond what any integrator allows
 };
 
@@ -154,6 +154,7 @@ class Simulation {
   Scenario scenario_;
   std::unique_ptr<ContactEngine> engine_;
   std::vector<double> rest_height_;
+  std::vector<double> reach_;  // [m] per body, its farthest rest vertex from the CG (the host-motion comparison)
   std::vector<Sample> history_;
   ContactDiagnostics diagnostics_;
   int steps_ = 0;
