@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "segment_grid.h"
@@ -12,6 +13,10 @@ namespace dymesh {
 namespace {
 
 constexpr double kNone = std::numeric_limits<double>::infinity();
+
+// the most times a pair's gap is corrected for an overlap its edges show at the vertices' touch (each
+// removes at least the overlap at the deepest stretch's middle; one suffices where it is symmetric)
+constexpr int kTouchCorrections = 16;
 
 // one body posed in the earth frame
 struct PosedBody {
@@ -111,12 +116,21 @@ std::vector<std::array<int, 2>> Edges(const TriMesh& mesh) {
   return edges;
 }
 
+// a posed body's search structures for gaps measured toward it along one earth direction (both in
+// its own frame, so they hold while the other body moves): its triangles across that direction and,
+// built when an edge of the other first needs it, its surface for edges passing through it
+struct TargetGrids {
+  TargetGrids(const PosedBody& target, const Vec3& d) : rays(target.model->mesh, target.rotation.transpose() * d) {}
+  ParallelRayGrid rays;
+  std::optional<SegmentGrid> surface;
+};
+
 // gap from `mover`'s surface to `target`'s along earth direction d: the smallest entering distance
 // of its vertices, or minus the deepest inside depth (distance back out) of its vertices and of the
 // parts of its edges that pass through the target's surface (where no vertex of either body lies
 // inside the other, as a coarse box threaded on a wall: before, "gap 2.25 m" and a run through it)
-double DirectedGap(const PosedBody& mover, const PosedBody& target, const Vec3& d, double length) {
-  const ParallelRayGrid grid(target.model->mesh, target.rotation.transpose() * d);
+double DirectedGap(const PosedBody& mover, const PosedBody& target, const Vec3& d, double length, TargetGrids* grids) {
+  const ParallelRayGrid& grid = grids->rays;
   double gap = kNone, depth = 0.0;
   auto probe = [&](const Vec3& q) {
     const Crossing ahead = grid.First(q, true, length, -kNone);
@@ -141,7 +155,8 @@ double DirectedGap(const PosedBody& mover, const PosedBody& target, const Vec3& 
   const PointBounds mover_box = BoundsOf(at), target_box = BoundsOf(target.model->mesh.vertices);
   if ((mover_box.lo.array() > target_box.hi.array()).any() || (mover_box.hi.array() < target_box.lo.array()).any())
     return depth > 0.0 ? -depth : gap;
-  const SegmentGrid surface(target.model->mesh);
+  if (!grids->surface) grids->surface.emplace(target.model->mesh);
+  const SegmentGrid& surface = *grids->surface;
   for (const auto& e : Edges(mover.model->mesh)) {
     const std::vector<double> s = surface.Crossings(at[e[0]], at[e[1]]);
     for (std::size_t k = 0; k + 1 < s.size(); ++k) probe(at[e[0]] + 0.5 * (s[k] + s[k + 1]) * (at[e[1]] - at[e[0]]));
@@ -162,19 +177,36 @@ double Diagonal(const BodyModel& m) {
   return (s.max - s.min).norm();
 }
 
-// gap of a against b along d, both ways (b's vertices move along -d against a)
+// gap (or overlap) of a against b along d, both ways (b's vertices move along -d against a): the
+// deeper overlap, or the nearer contact
+double TwoWayGap(const PosedBody& a, const PosedBody& b, const Vec3& d, double length, TargetGrids* grids_a,
+                 TargetGrids* grids_b) {
+  return std::min(DirectedGap(a, b, d, length, grids_b), DirectedGap(b, a, -d, length, grids_a));
+}
+
 PairPlacement MeasurePair(const std::vector<PosedBody>& bodies, int a, int b, const Vec3& d) {
   const double length = (bodies[a].pose->position - bodies[b].pose->position).norm() + Diagonal(*bodies[a].model) +
                         Diagonal(*bodies[b].model);
-  const double ab = DirectedGap(bodies[a], bodies[b], d, length);
-  const double ba = DirectedGap(bodies[b], bodies[a], -d, length);
+  TargetGrids grids_a(bodies[a], -d), grids_b(bodies[b], d);
   PairPlacement p;
   p.a = a;
   p.b = b;
   p.direction = d;
-  p.gap = std::min(ab, ba);  // the deeper overlap, or the nearer contact
+  p.gap = TwoWayGap(bodies[a], bodies[b], d, length, &grids_a, &grids_b);
   p.meet = p.gap != kNone;
   if (!p.meet) p.gap = 0.0;
+  // the vertices' gap, less the overlap the edges then show with a moved there: an edge meets an edge
+  // first (a car's rounded nose onto a box's corner, each edge passing the other's face with no vertex
+  // of either meeting one: 6 in on coarse meshes, and a body placed at contact was refused), corrected
+  // until none is left
+  RigidState moved = *bodies[a].pose;
+  const PosedBody touching{bodies[a].model, &moved, bodies[a].rotation};
+  for (int k = 0; k < kTouchCorrections && p.gap > 0.0; ++k) {
+    moved.position = bodies[a].pose->position + p.gap * d;
+    const double overlap = -TwoWayGap(touching, bodies[b], d, length, &grids_a, &grids_b);
+    if (!(overlap > kSegmentSlack * (1.0 + length))) break;
+    p.gap -= overlap;
+  }
   return p;
 }
 

@@ -128,6 +128,33 @@ TEST(Placement, PlaceAtContactLeavesTheRequestedGapAlongTheRelativeVelocity) {
   EXPECT_NEAR(moved.normalized().dot(relative), 1.0, 1e-12);
 }
 
+// found by a sweep of other meshes (2026-11-28): a coarse car placed 1 in from the milk truck ended
+// 5.2 in into it and the run was refused ("use place_at_contact"): an edge met an edge before any
+// vertex met a face. Two one-cell boxes 40 in long and high: the moving one, 60 in wide, pitched 45 deg
+// (its leading edge across the motion, level, 20 sqrt 2 in ahead of its CG, its ends beside the other
+// box), the struck one, 40 in wide, yawed 45 deg (its corner edge toward the other, upright, 20 sqrt 2
+// in behind its CG): the edges cross at their middles, so the boxes touch when their CGs are 40 sqrt 2
+// in apart; the vertices alone touch 20 in later, where the corner edge's ends meet the pitched box's
+// sloping faces. Placed 1 in apart: 40 sqrt 2 + 1 in between the CGs (round-off bar), and the run
+// starts (the overlap check does not refuse it)
+TEST(Placement, PlaceAtContactStopsWhereAnEdgeMeetsAnEdge) {
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  const BodySpec moving = s.bodies[0];
+  s.bodies[0] = testing::BoxVehicle("pitched", 40, 60, 40, {1, 1, 1}, 3000, 300, 100, 30, 0.1);
+  s.bodies[0].initial = moving.initial;
+  s.bodies[0].initial.pitch = 45.0 * u::kDegree;
+  s.bodies[1] = testing::BoxVehicle("yawed", 40, 40, 40, {1, 1, 1}, 3000, 300, 100, 30, 0.1);
+  s.bodies[1].initial = moving.initial;
+  s.bodies[1].initial.velocity = Vec3::Zero();
+  s.bodies[1].initial.position.x() = 300.0 * u::kInch;
+  s.bodies[1].initial.yaw = 45.0 * u::kDegree;
+  s.bodies[0].place_at_contact = BodySpec::PlaceAtContact{1, 1.0 * u::kInch};
+  const auto models = BuildBodyModels(s);
+  EXPECT_NO_THROW(PlaceBodies(&s, models));
+  const double apart = (s.bodies[1].initial.position - s.bodies[0].initial.position).norm() / u::kInch;
+  EXPECT_NEAR(apart, 40.0 * std::sqrt(2.0) + 1.0, 1e-9);
+}
+
 TEST(Cylinder, ClosedOutwardAndOfTheRightVolume) {
   const TriMesh c = MakeCylinder(0.15, 3.0, 32);
   const MeshStats s = ComputeStats(c);
