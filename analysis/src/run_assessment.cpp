@@ -118,6 +118,28 @@ double RelativeKineticEnergyBefore(const Simulation& sim) {
   return energy;
 }
 
+// the crush work the contact absorbed and gave back over the run [J] (its steps of positive and
+// negative normal work, all bodies summed), and the most its laws give back: e^2 of what they took,
+// e the largest of the deformable bodies' (-1 with the literal rebound law, whose share is not e^2)
+struct ReboundWork {
+  double absorbed = 0.0, returned = 0.0, e_squared = -1.0;
+};
+ReboundWork ReboundWorkOf(const Simulation& sim) {
+  ReboundWork r;
+  if (sim.scenario().contact.rebound_law != ReboundLaw::kScaled) return r;
+  r.e_squared = 0.0;
+  for (int i = 0; i < sim.engine().body_count(); ++i)
+    if (!sim.engine().model(i).rigid) r.e_squared = std::max(r.e_squared, std::pow(sim.engine().model(i).restitution, 2));
+  double before = 0.0;
+  for (const Sample& sample : sim.history()) {
+    double work = 0.0;
+    for (const BodySample& b : sample.bodies) work += b.crush_energy;
+    (work > before ? r.absorbed : r.returned) += std::abs(work - before);
+    before = work;
+  }
+  return r;
+}
+
 // the vertex farthest outside the body's undamaged bounds `rest` (body frame) and how far [m]
 struct NodeOutside {
   int vertex = -1;
@@ -193,6 +215,17 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
                        "before it): a restitution above 1, not physical; the crush law is too stiff for the time "
                        "step (check C3, D3 and Kv) or the masses are wrong",
                        -absorbed, -100.0 * absorbed / available, available)});
+  // contact that gave back more of the crush work it absorbed than restitution allows (spec §6: e^2)
+  if (const ReboundWork r = ReboundWorkOf(sim); r.e_squared >= 0.0 &&
+      r.returned > (kReboundMarginOfESquared * r.e_squared + kReboundMarginOfAbsorbed) * r.absorbed +
+                       kReboundMarginOfEnergy * available)
+    w->push_back({"rebound_beyond_restitution", "",
+                  Text("the contact gave back %.1f %% of the crush work it absorbed (%.3g J of %.3g J), where "
+                       "restitution e = %.2f gives back at most e^2 = %.1f %%: the rebound and delta-V are not "
+                       "physical (the node laws and the forces applied parted; a coarse mesh against a round "
+                       "pole, or a law too stiff for the step)",
+                       100.0 * r.returned / r.absorbed, r.returned, r.absorbed, std::sqrt(r.e_squared),
+                       100.0 * r.e_squared)});
   // the longest step taken: the scenario's, or the longest dt a host gave
   const TimeStepGuide& g = sim.time_step_guide();
   const double step = sim.largest_step();
@@ -297,7 +330,7 @@ void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, s
 
 bool WarningVoidsResults(std::string_view code) {
   return code == "passed_through" || code == "crush_beyond_length" || code == "energy_balance" ||
-         code == "energy_created";
+         code == "energy_created" || code == "rebound_beyond_restitution";
 }
 
 RunAssessment AssessRun(const Simulation& sim, const Summary& summary) {
