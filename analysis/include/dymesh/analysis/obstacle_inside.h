@@ -25,8 +25,9 @@ struct ObstacleInside {
 /// obstacle deeper than that went in between the nodes (the nodes slid aside, or never met it) and the
 /// contact no longer sees it once past TOOFAR_MAXIMUM. A deformable obstacle's vertices are taken as
 /// crushed at the end (no farther out than they were when it went in). Judged
-/// for a closed `body` mesh only, as `rest` (its rest mesh's ComputeStats) says: a display mesh's
-/// panels and interior parts have no front and back to be inside. Judged on the obstacle's vertices
+/// for a closed `body` mesh only, or one closed but for a few holes (at most one open edge per 200
+/// triangles, none shared by more than two), as `rest` (its rest mesh's ComputeStats) says: a display
+/// car's panels, window gaps and interior parts have no front and back to be inside. Judged on the obstacle's vertices
 /// facing into the body along the line (one on its flank lies against the notch's walls), against
 /// the shallowest rest front and the deepest crush (the corners' deepest crush interpolated across
 /// each face) in the lateral cells round each vertex (the body's median edge, the vertex's cell and
