@@ -25,7 +25,7 @@ Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<con
   for (const auto& m : models) {
     double farthest = 0.0;
     for (const Vec3& p : m->mesh.vertices) farthest = std::max(farthest, p.norm());
-    reach_.push_back(farthest);
+    farthest_vertex_.push_back(farthest);
   }
   engine_ = std::make_unique<ContactEngine>(std::move(models), initial, scenario_.contact, make_locator);
   for (std::size_t i = 0; i < scenario_.bodies.size(); ++i)
@@ -208,7 +208,7 @@ void Simulation::CompareHostMotion(const std::vector<RigidState>& states, double
   for (std::size_t i = 0; i < states.size(); ++i) {
     const RigidState& before = engine_->state(static_cast<int>(i)).rigid;
     const RigidState& after = states[i];
-    const double r = reach_[i];
+    const double r = farthest_vertex_[i];
     const Vec3 moved = after.position - before.position;
     const Vec3 accounted = 0.5 * (before.velocity + after.velocity) * dt;
     // the turn over the step and the one the rates account for, as rotation vectors in the body frame

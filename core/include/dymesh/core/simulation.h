@@ -154,7 +154,7 @@ class Simulation {
   Scenario scenario_;
   std::unique_ptr<ContactEngine> engine_;
   std::vector<double> rest_height_;
-  std::vector<double> reach_;  // [m] per body, its farthest rest vertex from the CG (the host-motion comparison)
+  std::vector<double> farthest_vertex_;  // [m] per body, its rest vertex farthest from the CG (the host-motion comparison)
   std::vector<Sample> history_;
   ContactDiagnostics diagnostics_;
   int steps_ = 0;
