@@ -111,6 +111,19 @@ std::vector<std::string> CodesOf(const Summary& summary) {
   return codes;
 }
 
+// the barrier box (30 mph, e 0.1) run to its end, with a quadratic term C [lb/in^4] and the loading
+// force held over the whole step (no turn within it, spec §6) when `c` is given
+Summary BarrierBoxRun(double c = 0.0) {
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  if (c > 0.0) {
+    s.contact.turn_within_step = false;
+    for (Stiffness& k : s.bodies[0].stiffness) k.C = c * units::PoundPerInchPow(4);
+  }
+  Simulation sim(s, BuildBodyModels(s), accel::MakeBruteForceLocatorFactory());
+  sim.Run();
+  return Summarize(sim);
+}
+
 TEST(RunAssessment, ContactThatCreatesEnergyIsWarnedAndVoidsTheResults) {
   // the barrier box with a quadratic term C = 1e5 lb/in^4 (a fuzzed input): the pressure jumps far
   // within one step, the rebound returns more than the loading took, and the box leaves faster than
@@ -118,21 +131,13 @@ TEST(RunAssessment, ContactThatCreatesEnergyIsWarnedAndVoidsTheResults) {
   // (crush + friction, never negative when restitution is at most 1) can tell. Without the turn within
   // the step (spec §6), whose loading stops where the approach does: with it the box leaves at 0.21 of
   // its speed
-  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
-  s.contact.turn_within_step = false;
-  for (Stiffness& k : s.bodies[0].stiffness) k.C = 1e5 * units::PoundPerInchPow(4);
-  Simulation sim(s, BuildBodyModels(s), accel::MakeBruteForceLocatorFactory());
-  sim.Run();
-  const Summary summary = Summarize(sim);
+  const Summary summary = BarrierBoxRun(1e5);
   ASSERT_GT(summary.kinetic_after, 1.01 * summary.kinetic_before);  // the case creates energy
   const std::vector<std::string> codes = CodesOf(summary);
   EXPECT_EQ(std::count(codes.begin(), codes.end(), "energy_created"), 1) << ::testing::PrintToString(codes);
   EXPECT_TRUE(WarningVoidsResults("energy_created"));
   // the same box without C keeps its energy account clean: restitution 0.1, no such warning
-  Scenario plain = testing::BarrierScenario(30.0, 0.1, 0.0005);
-  Simulation plain_sim(plain, BuildBodyModels(plain), accel::MakeBruteForceLocatorFactory());
-  plain_sim.Run();
-  const Summary plain_summary = Summarize(plain_sim);
+  const Summary plain_summary = BarrierBoxRun();
   EXPECT_GT(plain_summary.crush_energy, 0.0);
   const std::vector<std::string> plain_codes = CodesOf(plain_summary);
   EXPECT_EQ(std::count(plain_codes.begin(), plain_codes.end(), "energy_created"), 0);
@@ -147,12 +152,7 @@ TEST(RunAssessment, ContactThatCreatesEnergyIsWarnedAndVoidsTheResults) {
 // sweep of other meshes (2026-11-28): a coarse rally car into a centred round pole gave back 3.9 % and
 // left at 1.067 times (1 + e) v with no warning that voided it
 TEST(RunAssessment, AReboundBeyondRestitutionIsWarnedAndVoidsTheResults) {
-  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
-  s.contact.turn_within_step = false;
-  for (Stiffness& k : s.bodies[0].stiffness) k.C = 1e4 * units::PoundPerInchPow(4);
-  Simulation sim(s, BuildBodyModels(s), accel::MakeBruteForceLocatorFactory());
-  sim.Run();
-  const Summary summary = Summarize(sim);
+  const Summary summary = BarrierBoxRun(1e4);
   const double speed = 30.0 * units::kMph;
   ASSERT_GT(summary.bodies[0].delta_v, 1.1 * speed);  // past (1 + e) v
   ASSERT_LT(summary.kinetic_after, summary.kinetic_before);
@@ -160,10 +160,7 @@ TEST(RunAssessment, AReboundBeyondRestitutionIsWarnedAndVoidsTheResults) {
   EXPECT_EQ(std::count(codes.begin(), codes.end(), "rebound_beyond_restitution"), 1) << ::testing::PrintToString(codes);
   EXPECT_EQ(std::count(codes.begin(), codes.end(), "energy_created"), 0);
   EXPECT_TRUE(WarningVoidsResults("rebound_beyond_restitution"));
-  Scenario plain = testing::BarrierScenario(30.0, 0.1, 0.0005);
-  Simulation plain_sim(plain, BuildBodyModels(plain), accel::MakeBruteForceLocatorFactory());
-  plain_sim.Run();
-  const std::vector<std::string> plain_codes = CodesOf(Summarize(plain_sim));
+  const std::vector<std::string> plain_codes = CodesOf(BarrierBoxRun());
   EXPECT_EQ(std::count(plain_codes.begin(), plain_codes.end(), "rebound_beyond_restitution"), 0);
 }
 
