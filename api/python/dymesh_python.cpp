@@ -42,21 +42,49 @@ class Run {
       : sim_(scenario, dymesh::BuildBodyModels(scenario),
              dymesh::accel::MakeEmbreeLocatorFactory(std::make_shared<const dymesh::accel::EmbreeDevice>())) {}
 
-  dymesh::Simulation& sim() { return sim_; }
-  const dymesh::Simulation& sim() const { return sim_; }
+  // every access is refused while this run steps with the interpreter released (Stepping), from
+  // another thread: it would read or change a step in progress
+  dymesh::Simulation& sim() {
+    RequireIdle();
+    return sim_;
+  }
+  const dymesh::Simulation& sim() const {
+    RequireIdle();
+    return sim_;
+  }
+
+  // steps the run with the interpreter released while each step runs (other Python threads go on, and
+  // runs in several threads step at once), until `more` (called between steps, the interpreter held)
+  // says stop. Each call takes and leaves the interpreter, so `busy_` is only ever read and written
+  // under it
+  template <typename Step, typename More>
+  void Stepping(Step&& step, More&& more) {
+    RequireIdle();
+    busy_ = true;
+    struct Idle {
+      bool& busy;
+      ~Idle() { busy = false; }
+    } idle{busy_};
+    do {
+      py::gil_scoped_release release;
+      step(sim_);
+    } while (more(sim_));
+  }
 
   // the summary.json text `dymesh run` writes for this run, byte for byte
   std::string SummaryJson() const {
-    return dymesh::SummaryJson(dymesh::Summarize(sim_), sim_.scenario(), dymesh::OutputFileNames(sim_.scenario()));
+    const dymesh::Simulation& s = sim();
+    return dymesh::SummaryJson(dymesh::Summarize(s), s.scenario(), dymesh::OutputFileNames(s.scenario()));
   }
 
   // states of every body as an (n, 12) array
   py::array_t<double> States() const {
-    const int n = sim_.engine().body_count();
+    const dymesh::ContactEngine& engine = sim().engine();
+    const int n = engine.body_count();
     py::array_t<double> out({n, kStateColumns});
     auto a = out.mutable_unchecked<2>();
     for (int i = 0; i < n; ++i) {
-      const RigidState& r = sim_.engine().state(i).rigid;
+      const RigidState& r = engine.state(i).rigid;
       const double row[kStateColumns] = {r.position.x(), r.position.y(), r.position.z(), r.roll, r.pitch, r.yaw,
                                          r.velocity.x(), r.velocity.y(), r.velocity.z(), r.omega.x(), r.omega.y(),
                                          r.omega.z()};
@@ -67,7 +95,7 @@ class Run {
 
   // an (n, 12) array to states, refused unless it has one row per body
   std::vector<RigidState> ToStates(const py::array_t<double, py::array::c_style | py::array::forcecast>& states) const {
-    const int n = sim_.engine().body_count();
+    const int n = sim().engine().body_count();
     if (states.ndim() != 2 || states.shape(0) != n || states.shape(1) != kStateColumns)
       throw std::invalid_argument("states: expected an array of shape (" + std::to_string(n) + ", 12), one row per body");
     auto a = states.unchecked<2>();
@@ -83,7 +111,9 @@ class Run {
 
   // force-provider step: loads (n, 9) for the coming step
   py::array_t<double> HostStep(const py::array_t<double, py::array::c_style | py::array::forcecast>& states, double dt) {
-    const dymesh::StepResult step = sim_.HostStep(ToStates(states), dt);
+    const std::vector<RigidState> at = ToStates(states);
+    dymesh::StepResult step;
+    Stepping([&](dymesh::Simulation& sim) { step = sim.HostStep(at, dt); }, [](const dymesh::Simulation&) { return false; });
     const int n = sim_.engine().body_count();
     py::array_t<double> out({n, kLoadColumns});
     auto a = out.mutable_unchecked<2>();
@@ -97,7 +127,12 @@ class Run {
   }
 
  private:
+  void RequireIdle() const {
+    if (busy_) throw std::logic_error("the run is stepping in another thread: wait until its run() returns");
+  }
+
   dymesh::Simulation sim_;
+  bool busy_ = false;  // stepping with the interpreter released
 };
 
 // a read-only (rows, 3) view into engine memory that keeps `owner` (the Run) alive
@@ -203,15 +238,19 @@ PYBIND11_MODULE(dymesh, m) {
              Run& r = self.cast<Run&>();
              // Ctrl-C (or any signal Python handles) stops the run between steps, its state consistent
              // and unfinished (status "interrupted"), and raises there (KeyboardInterrupt)
-             bool signalled = false;
-             r.sim().Run([&](double) { return !(signalled = PyErr_CheckSignals() != 0); });
+             bool signalled = false, more = true;
+             r.Stepping([&](dymesh::Simulation& sim) { more = sim.Advance(); },
+                        [&](const dymesh::Simulation&) { return more && !(signalled = PyErr_CheckSignals() != 0); });
              if (signalled) throw py::error_already_set();
              return self;
            }, "Runs to the end (duration or separation); returns the run. StateError for a finished or host-driven "
               "run; a Ctrl-C stops it between steps (KeyboardInterrupt; the run stays unfinished, status "
-              "\"interrupted\").")
-      .def("step", [](Run& r) { r.sim().Advance(); return r.sim().finished(); },
-           "One step; True once the run has ended. StateError for a finished or host-driven run.")
+              "\"interrupted\"). Other threads run while it steps; any other call on this run meanwhile raises "
+              "StateError.")
+      .def("step", [](Run& r) {
+             r.Stepping([](dymesh::Simulation& sim) { sim.Advance(); }, [](const dymesh::Simulation&) { return false; });
+             return r.sim().finished();
+           }, "One step; True once the run has ended. StateError for a finished or host-driven run.")
       .def_property_readonly("time", [](const Run& r) { return r.sim().time(); })
       .def_property_readonly("finished", [](const Run& r) { return r.sim().finished(); })
       .def_property_readonly("status", [](const Run& r) { return std::string(dymesh::RunStatusName(dymesh::Summarize(r.sim()).status)); })

@@ -7,6 +7,7 @@ import os
 import signal
 import subprocess
 import tempfile
+import threading
 import unittest
 
 import numpy as np
@@ -161,6 +162,38 @@ class RunState(unittest.TestCase):
             with self.assertRaisesRegex(dymesh.InputError, "taken: dir: exists and is not a folder") as refused:
                 run.write_outputs(taken)
             self.assertNotIn("--out", str(refused.exception))
+
+
+class Threads(unittest.TestCase):
+    def test_runs_in_two_threads_end_as_one_after_the_other(self):
+        # run() lets the interpreter go while it steps: two runs stepping at once in two threads end
+        # byte-identical to a run alone (each owns its state; results do not depend on threads)
+        alone = dymesh.load_scenario(BARRIER).run().summary_json
+        runs = [dymesh.load_scenario(BARRIER) for _ in range(2)]
+        threads = [threading.Thread(target=r.run) for r in runs]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        for r in runs:
+            self.assertEqual(r.summary_json, alone)
+
+    def test_a_run_stepping_in_another_thread_refuses_other_calls(self):
+        # until 2026-11-28 run() held the interpreter, so no other thread could call anything meanwhile;
+        # now a call on the run while another thread's run() steps it would see a step in progress
+        run = dymesh.load_scenario(BARRIER)
+        stepping = threading.Thread(target=run.run)
+        stepping.start()
+        refused = None
+        while stepping.is_alive() and refused is None:
+            try:
+                run.time  # a read: before run() starts and after it returns, it answers
+            except dymesh.StateError as e:
+                refused = str(e)
+        stepping.join()
+        self.assertIn("stepping in another thread", refused or "")
+        self.assertTrue(run.finished)
+        self.assertEqual(run.summary_json, dymesh.load_scenario(BARRIER).run().summary_json)
 
 
 class ForceProvider(unittest.TestCase):
