@@ -71,6 +71,10 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double c
     out << "    note: " << duplicates << " duplicated faces (on the same three vertices as another; tolerated up to 10 % of the faces)\n";
   if (s.open_edges > 0)
     out << "    note: open mesh (edges used by only one triangle): usual for display meshes\n";
+  // a vehicle is wider (y) than it is tall (z): a y-up mesh read without its axes lies on its side
+  if (!scenario.bodies[i].mesh.file.empty() && scenario.bodies[i].motion != MotionModel::kFixed && size.z() > size.y())
+    out << "    note: taller (z) than wide (y): if this is a vehicle lying on its side, set mesh.axes (a y-up mesh "
+           "with its front at +x takes [\"x\", \"z\", \"-y\"])\n";
   if (note == CoarseNote::kCoarsePair)
     out << Format("    note: median edge %.2f %s: against another deformable body as coarse, nodes this far apart "
                   "miss each other's faces and the bodies can pass partly through each other (README, Known "
@@ -78,8 +82,9 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double c
   if (note == CoarseNote::kAgainstFiner)
     out << Format("    note: median edge %.2f %s: against a finer deformable body, nodes this far apart often miss "
                   "its faces, so this body takes little of the crush there and the other can sink into it at "
-                  "higher speeds (a run marks the crush its mesh could not take, crush_not_in_mesh; README, Known "
-                  "limits); mesh.subdivisions refines it\n",
+                  "higher speeds (a run marks the crush its mesh could not take where it can tell, crush_not_in_mesh, "
+                  "and a body gone inside a closed one, obstacle_inside; README, Known limits); "
+                  "mesh.subdivisions refines it\n",
                   coarse_edge * u.length, u.length_name);
 }
 

@@ -88,6 +88,30 @@ TEST_F(Cli, CheckPrintsMeshStatisticsInScenarioUnits) {
   EXPECT_EQ(r.err, "");
 }
 
+// found by a sweep of other meshes (2026-11-28): a y-up car mesh given without `axes` was accepted
+// silently, the car lying on its side (its width as its height); only the printed bounds showed it.
+// The barrier demo's p406 (axes x, z, -y: 70.3 in wide, 56.6 in tall) gets no note; without its axes
+// mapping it is 56.6 in wide and 70.3 in tall, and `check` says so
+TEST_F(Cli, CheckNotesAVehicleLyingOnItsSide) {
+  std::ifstream in(std::string(DYMESH_DATA_DIR) + "/scenarios/barrier_frontal.json");
+  Json scenario = Json::parse(in);
+  Json p406 = Json::parse(std::ifstream(std::string(DYMESH_DATA_DIR) + "/vehicles/p406.json"));
+  p406.erase("units");
+  p406["mesh"]["file"] = std::string(DYMESH_DATA_DIR) + "/meshes/torcs_p406.obj";
+  for (auto& [key, value] : p406.items()) scenario["bodies"][0][key] = value;
+  scenario["bodies"][0].erase("vehicle");
+  const std::string note = "note: taller (z) than wide (y): if this is a vehicle lying on its side, set mesh.axes";
+  const ProcessResult upright = Dymesh({"check", Write("upright.json", scenario.dump())});
+  EXPECT_EQ(upright.exit_code, 0) << upright.err;
+  EXPECT_EQ(upright.out.find(note), std::string::npos) << upright.out;
+  scenario["bodies"][0]["mesh"].erase("axes");
+  scenario["bodies"][0].erase("cg");  // the bounds centre (the vehicle's CG is in the mapped axes)
+  scenario["bodies"][0]["initial"]["position"][0] = -30.0;  // clear of the barrier, its CG moved
+  const ProcessResult lying = Dymesh({"check", Write("lying.json", scenario.dump())});
+  EXPECT_EQ(lying.exit_code, 0) << lying.err;
+  EXPECT_NE(lying.out.find(note), std::string::npos) << lying.out;
+}
+
 TEST_F(Cli, CheckNotesCoarseDeformableBodies) {
   // two deformable boxes whose fronts are 6 in squares and sides 180 in strips (median edge 6.00 in)
   Json j = BoxScenario();
