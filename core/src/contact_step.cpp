@@ -103,6 +103,17 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   moved_.resize(n);
   for (int i = 0; i < n; ++i) pending_delta_[i].resize(models_[i]->mesh.vertices.size());
   engaged_mark_.resize(n);
+  // determinism: every pair (a < b), in an order the bodies set, not their listing (a car between two
+  // poles took the poles' crush in listing order: swapping the poles moved its yaw rate 3e-4), by the
+  // pair's names, then by index where names repeat
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) pair_order_.push_back({a, b});
+  const auto key = [&](const std::array<int, 2>& p) {
+    const std::string &x = models_[p[0]]->name, &y = models_[p[1]]->name;
+    return std::make_pair(std::min(x, y), std::max(x, y));
+  };
+  std::stable_sort(pair_order_.begin(), pair_order_.end(),
+                   [&](const std::array<int, 2>& p, const std::array<int, 2>& q) { return key(p) < key(q); });
 }
 
 void ContactEngine::InitBounds(int body) {
@@ -165,59 +176,57 @@ StepResult ContactEngine::Step(double dt) {
   AccountWork();  // a step the host did not book itself
   const int n = body_count();
   StepResult result;
-  // every pair whose bounds overlap, in index order (determinism: fixed pair order)
-  for (int a = 0; a < n; ++a) {
-    for (int b = a + 1; b < n; ++b) {
-      const size_t ab = static_cast<size_t>(a) * n + b, ba = static_cast<size_t>(b) * n + a;
-      char& held = held_[ab];
-      if ((models_[a]->rigid && models_[b]->rigid) || !BoundsOverlap(a, b)) {
-        held = 0;
-        pushed_[ab] = pushed_[ba] = Vec3::Zero();
-        continue;
-      }
-      ++result.diagnostics.pairs_in_contact;
-      auto& engaged = engaged_[ab];
-      const int passes = options_.passes_per_step;
-      std::vector<PassSums> sums(passes);
-      PassSums rigid_nodes;  // a rigid body's nodes pushing the faces they crossed
-      auto run = [&](int pass, int master, bool stage) {
-        const int slave = master == a ? b : a;
-        sums[pass] = RunPass(master, slave, stage, &engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
-      };
-      if (models_[a]->rigid || models_[b]->rigid) {
-        // a rigid body is always the master and takes none of the crush
-        const int master = models_[a]->rigid ? a : b;
-        for (int pass = 0; pass < passes; ++pass) run(pass, master, false);
-        const int slave = master == a ? b : a;
-        rigid_nodes = PushFacesOffRigidNodes(master, slave, engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
-      } else {
-        // spec §1 swapping, simultaneously: each pair of passes lets both bodies, as slaves, find the
-        // overlap against the other's surface as it was before the pair, each taking its
-        // equal-pressure share (spec §5); both shares are committed together, so an overlap is
-        // absorbed once and neither body's order or role is favoured
-        int pass = 0;
-        for (; pass + 1 < passes; pass += 2) {
-          run(pass, b, true);
-          run(pass + 1, a, true);
-          CommitPending(a);
-          CommitPending(b);
-        }
-        // an odd last pass: one side, alternating between steps (its master's share waits for the next)
-        const int lead = LeadSlave(a, b);
-        if (pass < passes) run(pass, (step_index_ % 2 == 0) == (lead == a) ? b : a, false);
-        // determinism: the passes combined in an order the bodies set, not their listing (four passes
-        // as [b, a, b, a] and [a, b, a, b] rounded their sums differently)
-        std::stable_partition(sums.begin(), sums.end(), [&](const PassSums& p) { return p.slave == lead; });
-      }
-      const std::vector<double> weights = PassWeights(sums);
-      result.pairs.push_back(CombinePasses(a, b, sums, weights, rigid_nodes));
-      EndApproachWithinStep(&sums, weights, rigid_nodes, dt, &result.pairs.back());
-      // the pair's normal impulse, each side in the other's frame
-      const Vec3 on_a = result.pairs.back().normal_force[0] * dt;
-      pushed_[ab] += states_[b].rigid.Rotation().transpose() * on_a;
-      pushed_[ba] -= states_[a].rigid.Rotation().transpose() * on_a;
-      PairFriction(sums, weights, dt, &held, &result.pairs.back());
+  // every pair whose bounds overlap, in the bodies' own order (determinism: fixed pair order)
+  for (const auto& [a, b] : pair_order_) {
+    const size_t ab = static_cast<size_t>(a) * n + b, ba = static_cast<size_t>(b) * n + a;
+    char& held = held_[ab];
+    if ((models_[a]->rigid && models_[b]->rigid) || !BoundsOverlap(a, b)) {
+      held = 0;
+      pushed_[ab] = pushed_[ba] = Vec3::Zero();
+      continue;
     }
+    ++result.diagnostics.pairs_in_contact;
+    auto& engaged = engaged_[ab];
+    const int passes = options_.passes_per_step;
+    std::vector<PassSums> sums(passes);
+    PassSums rigid_nodes;  // a rigid body's nodes pushing the faces they crossed
+    auto run = [&](int pass, int master, bool stage) {
+      const int slave = master == a ? b : a;
+      sums[pass] = RunPass(master, slave, stage, &engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
+    };
+    if (models_[a]->rigid || models_[b]->rigid) {
+      // a rigid body is always the master and takes none of the crush
+      const int master = models_[a]->rigid ? a : b;
+      for (int pass = 0; pass < passes; ++pass) run(pass, master, false);
+      const int slave = master == a ? b : a;
+      rigid_nodes = PushFacesOffRigidNodes(master, slave, engaged[slave == a ? 0 : 1], dt, &result.diagnostics);
+    } else {
+      // spec §1 swapping, simultaneously: each pair of passes lets both bodies, as slaves, find the
+      // overlap against the other's surface as it was before the pair, each taking its
+      // equal-pressure share (spec §5); both shares are committed together, so an overlap is
+      // absorbed once and neither body's order or role is favoured
+      int pass = 0;
+      for (; pass + 1 < passes; pass += 2) {
+        run(pass, b, true);
+        run(pass + 1, a, true);
+        CommitPending(a);
+        CommitPending(b);
+      }
+      // an odd last pass: one side, alternating between steps (its master's share waits for the next)
+      const int lead = LeadSlave(a, b);
+      if (pass < passes) run(pass, (step_index_ % 2 == 0) == (lead == a) ? b : a, false);
+      // determinism: the passes combined in an order the bodies set, not their listing (four passes
+      // as [b, a, b, a] and [a, b, a, b] rounded their sums differently)
+      std::stable_partition(sums.begin(), sums.end(), [&](const PassSums& p) { return p.slave == lead; });
+    }
+    const std::vector<double> weights = PassWeights(sums);
+    result.pairs.push_back(CombinePasses(a, b, sums, weights, rigid_nodes));
+    EndApproachWithinStep(&sums, weights, rigid_nodes, dt, &result.pairs.back());
+    // the pair's normal impulse, each side in the other's frame
+    const Vec3 on_a = result.pairs.back().normal_force[0] * dt;
+    pushed_[ab] += states_[b].rigid.Rotation().transpose() * on_a;
+    pushed_[ba] -= states_[a].rigid.Rotation().transpose() * on_a;
+    PairFriction(sums, weights, dt, &held, &result.pairs.back());
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
   std::vector<Vec3> force_earth(n, Vec3::Zero()), moment_earth(n, Vec3::Zero());

@@ -262,6 +262,7 @@ class ContactEngine {
   std::vector<std::unique_ptr<Locator>> locators_;
   std::vector<Vec3> bounds_min_, bounds_max_;  // [m] body-frame box holding every vertex so far, per body
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
+  std::vector<std::array<int, 2>> pair_order_;  // every pair (a < b) in the order a step visits them
   std::vector<std::array<EngagedNodes, 2>> engaged_;  // per pair (a<b): nodes of a, of b engaged with the other
   std::vector<char> held_;  // per pair (a<b): friction left the slide under the null band in the last step
   // per ordered pair (slave * n + master): the normal impulse the master gave the slave in this
