@@ -104,8 +104,8 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   for (int i = 0; i < n; ++i) pending_delta_[i].resize(models_[i]->mesh.vertices.size());
   engaged_mark_.resize(n);
   // determinism: every pair (a < b), in an order the bodies set, not their listing (a car between two
-  // poles took the poles' crush in listing order: swapping the poles moved its yaw rate 3e-4), by the
-  // pair's names, then by index where names repeat
+  // poles took the poles' crush in listing order: swapping the poles moved its yaw rate 3e-4, a box's
+  // between closer poles 17 %), by the pair's names, then by index where names repeat
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b) pair_order_.push_back({a, b});
   const auto key = [&](const std::array<int, 2>& p) {

@@ -291,6 +291,12 @@ PointBounds BoundsOf(const std::vector<Vec3>& points) {
   return b;
 }
 
+double FarthestFromOrigin(const std::vector<Vec3>& points) {
+  double farthest = 0.0;
+  for (const Vec3& p : points) farthest = std::max(farthest, p.norm());
+  return farthest;
+}
+
 double SignedVolume(const TriMesh& mesh) {
   if (mesh.vertices.empty()) return 0.0;
   // about the bounds centre: exact for closed meshes, a meaningful sign for open shells

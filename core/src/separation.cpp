@@ -65,8 +65,7 @@ PlanMotion PlanMotionOf(const BodyState& state) {
 
 double WobbleSpeed(const BodyModel& model, MotionModel motion, const BodyState& state, double horizon, double step) {
   if (HoldsHeight(motion) || model.mass <= 0.0) return 0.0;
-  double reach = 0.0;  // [m] farthest vertex from the CG
-  for (const Vec3& v : state.vertices) reach = std::max(reach, v.norm());
+  const double reach = FarthestFromOrigin(state.vertices);  // [m] farthest vertex from the CG
   // how far the angular velocity (earth frame) is from the present turn about the vertical
   RigidState free = state.rigid;
   const Vec3 turn(0.0, 0.0, (free.Rotation() * free.omega).z());

@@ -22,11 +22,7 @@ Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<con
     initial.push_back(b.initial);
     rest_height_.push_back(b.initial.position.z());
   }
-  for (const auto& m : models) {
-    double farthest = 0.0;
-    for (const Vec3& p : m->mesh.vertices) farthest = std::max(farthest, p.norm());
-    farthest_vertex_.push_back(farthest);
-  }
+  for (const auto& m : models) farthest_vertex_.push_back(FarthestFromOrigin(m->mesh.vertices));
   engine_ = std::make_unique<ContactEngine>(std::move(models), initial, scenario_.contact, make_locator);
   for (std::size_t i = 0; i < scenario_.bodies.size(); ++i)
     engine_->SetMotion(static_cast<int>(i), scenario_.bodies[i].motion);

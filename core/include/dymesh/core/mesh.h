@@ -50,6 +50,9 @@ struct PointBounds {
 };
 PointBounds BoundsOf(const std::vector<Vec3>& points);
 
+/// The largest distance of the points from the origin (a body's about its CG) [m]; 0 for none.
+double FarthestFromOrigin(const std::vector<Vec3>& points);
+
 /// Vertex, triangle, edge and bounds statistics.
 MeshStats ComputeStats(const TriMesh& mesh);
 
