@@ -108,6 +108,10 @@ int CheckCommand(const std::string& scenario_path, std::ostream& out) {
                   guide.contact_period, models[guide.body_a]->name.c_str(), models[guide.body_b]->name.c_str(),
                   guide.recommended_step, guide.stable_limit,
                   scenario.time_step > guide.recommended_step ? "; warning: the step is coarser than recommended" : "");
+  // the gravity bodies' ground support
+  if (guide.ground_body >= 0)
+    out << Format("  ground support under \"%s\" (motion gravity, %.0f rad/s): stable limit %.3g s\n",
+                  models[guide.ground_body]->name.c_str(), guide.ground_omega, guide.ground_stable_limit);
   // the step over which the fastest pair closes by the search reach
   if (guide.fastest_a >= 0 && scenario.time_step > guide.reach_step) {
     const OutputUnits u = UnitsOf(scenario.units);

@@ -63,6 +63,7 @@ BodySummary SummarizeBody(const Simulation& sim, int i) {
   b.crush_energy = state.crush_energy;
   b.law_energy = state.law_energy;
   b.friction_energy = state.friction_energy;
+  b.support_work = sim.support_work(i);
   b.final_velocity = state.rigid.velocity;
   b.final_yaw_rate = state.rigid.omega.z();
   b.crush_profile = MeasureCrushProfile(model, state);
@@ -152,14 +153,16 @@ Summary Summarize(const Simulation& sim) {
     sum.crush_energy += b.crush_energy;
     sum.friction_energy += b.friction_energy;
     sum.law_energy += b.law_energy;
+    sum.support_work += b.support_work;
   }
   sum.energy_discontinuity = sum.crush_energy - sum.law_energy;
   const double lost = sum.kinetic_before - sum.kinetic_after;
-  // relative to the kinetic energy lost; with none lost, contact work of either sign is wholly unbalanced
-  // (-100 % or +100 %: a host that holds the bodies' velocities while the contact works, 2026-11-28,
-  // read 0.0)
-  const double work = sum.crush_energy + sum.friction_energy;
-  sum.energy_balance_error = lost != 0.0 ? (lost - sum.crush_energy - sum.friction_energy) / lost
+  // relative to the kinetic energy lost, which the contact work takes and the motion models' loads
+  // give (a `gravity` body's weight and ground support); with none lost, contact work of either sign
+  // is wholly unbalanced (-100 % or +100 %: a host that holds the bodies' velocities while the contact
+  // works, 2026-11-28, read 0.0)
+  const double work = sum.crush_energy + sum.friction_energy - sum.support_work;
+  sum.energy_balance_error = lost != 0.0 ? (lost + sum.support_work - sum.crush_energy - sum.friction_energy) / lost
                              : work > 0.0 ? -1.0 : work < 0.0 ? 1.0 : 0.0;
   // each pair's closing and separation speed along its impulse; the largest impulse is the main one
   double largest = 0.0;

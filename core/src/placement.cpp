@@ -125,11 +125,11 @@ struct TargetGrids {
   std::optional<SegmentGrid> surface;
 };
 
-// gap from `mover`'s surface to `target`'s along earth direction d: the smallest entering distance
+// gap from `mover`'s surface to `target`'s along the earth direction `grids` were cast along: the smallest entering distance
 // of its vertices, or minus the deepest inside depth (distance back out) of its vertices and of the
 // parts of its edges that pass through the target's surface (where no vertex of either body lies
 // inside the other, as a coarse box threaded on a wall: before, "gap 2.25 m" and a run through it)
-double DirectedGap(const PosedBody& mover, const PosedBody& target, const Vec3& d, double length, TargetGrids* grids) {
+double DirectedGap(const PosedBody& mover, const PosedBody& target, double length, TargetGrids* grids) {
   const ParallelRayGrid& grid = grids->rays;
   double gap = kNone, depth = 0.0;
   auto probe = [&](const Vec3& q) {
@@ -177,11 +177,10 @@ double Diagonal(const BodyModel& m) {
   return (s.max - s.min).norm();
 }
 
-// gap (or overlap) of a against b along d, both ways (b's vertices move along -d against a): the
-// deeper overlap, or the nearer contact
-double TwoWayGap(const PosedBody& a, const PosedBody& b, const Vec3& d, double length, TargetGrids* grids_a,
-                 TargetGrids* grids_b) {
-  return std::min(DirectedGap(a, b, d, length, grids_b), DirectedGap(b, a, -d, length, grids_a));
+// gap (or overlap) of a against b along the grids' direction d, both ways (b's vertices move along -d
+// against a): the deeper overlap, or the nearer contact
+double TwoWayGap(const PosedBody& a, const PosedBody& b, double length, TargetGrids* grids_a, TargetGrids* grids_b) {
+  return std::min(DirectedGap(a, b, length, grids_b), DirectedGap(b, a, length, grids_a));
 }
 
 PairPlacement MeasurePair(const std::vector<PosedBody>& bodies, int a, int b, const Vec3& d) {
@@ -192,7 +191,7 @@ PairPlacement MeasurePair(const std::vector<PosedBody>& bodies, int a, int b, co
   p.a = a;
   p.b = b;
   p.direction = d;
-  p.gap = TwoWayGap(bodies[a], bodies[b], d, length, &grids_a, &grids_b);
+  p.gap = TwoWayGap(bodies[a], bodies[b], length, &grids_a, &grids_b);
   p.meet = p.gap != kNone;
   if (!p.meet) p.gap = 0.0;
   // the vertices' gap, less the overlap the edges then show with a moved there: an edge meets an edge
@@ -203,7 +202,7 @@ PairPlacement MeasurePair(const std::vector<PosedBody>& bodies, int a, int b, co
   const PosedBody touching{bodies[a].model, &moved, bodies[a].rotation};
   for (int k = 0; k < kTouchCorrections && p.gap > 0.0; ++k) {
     moved.position = bodies[a].pose->position + p.gap * d;
-    const double overlap = -TwoWayGap(touching, bodies[b], d, length, &grids_a, &grids_b);
+    const double overlap = -TwoWayGap(touching, bodies[b], length, &grids_a, &grids_b);
     if (!(overlap > kSegmentSlack * (1.0 + length))) break;
     p.gap -= overlap;
   }

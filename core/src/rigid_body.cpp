@@ -6,11 +6,6 @@
 #include "dymesh/core/units.h"
 
 namespace dymesh {
-namespace {
-
-constexpr double kGroundStaticDeflection = 0.001;  // [m] sag of the gravity model's ground support
-
-}  // namespace
 
 ExternalLoads MotionModelLoads(MotionModel motion, const BodyModel& model, const RigidState& s,
                                double rest_height) {

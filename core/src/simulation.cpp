@@ -22,6 +22,7 @@ Simulation::Simulation(const Scenario& scenario, std::vector<std::shared_ptr<con
     initial.push_back(b.initial);
     rest_height_.push_back(b.initial.position.z());
   }
+  support_work_.assign(scenario_.bodies.size(), 0.0);
   for (const auto& m : models) farthest_vertex_.push_back(FarthestFromOrigin(m->mesh.vertices));
   engine_ = std::make_unique<ContactEngine>(std::move(models), initial, scenario_.contact, make_locator);
   for (std::size_t i = 0; i < scenario_.bodies.size(); ++i)
@@ -108,6 +109,7 @@ double Simulation::SoonestPairMeeting(const std::vector<PlanMotion>& plans, doub
 bool Simulation::Integrate(const StepResult& step, double dt) {
   // every body's new state first; none is set unless all are finite
   std::vector<RigidState> next;
+  std::vector<double> support_work;
   for (int i = 0; i < engine_->body_count(); ++i) {
     const BodyModel& model = engine_->model(i);
     const MotionModel motion = scenario_.bodies[i].motion;
@@ -119,9 +121,16 @@ bool Simulation::Integrate(const StepResult& step, double dt) {
     const bool finite = rigid.position.allFinite() && rigid.velocity.allFinite() && rigid.omega.allFinite() &&
                         std::isfinite(rigid.roll + rigid.pitch + rigid.yaw) && loads.force_earth.allFinite();
     if (!finite) return false;
+    // the motion model's loads' work at the step's mean velocity: with the semi-implicit update, exactly
+    // their part of the kinetic energy's change (they carry no moment)
+    const Vec3 mean_velocity = 0.5 * (engine_->state(i).rigid.velocity + rigid.velocity);
+    support_work.push_back(extra.force_earth.dot(mean_velocity) * dt);
     next.push_back(rigid);
   }
-  for (int i = 0; i < engine_->body_count(); ++i) engine_->SetRigidState(i, next[i]);
+  for (int i = 0; i < engine_->body_count(); ++i) {
+    engine_->SetRigidState(i, next[i]);
+    support_work_[i] += support_work[i];
+  }
   return true;
 }
 
@@ -272,6 +281,7 @@ void Simulation::Record(const StepResult* step, double dt) {
     b.law_energy = s.law_energy;
     b.crush_energy = s.crush_energy;
     b.friction_energy = s.friction_energy;
+    b.support_work = support_work_[i];
     sample.bodies.push_back(b);
   }
   history_.push_back(std::move(sample));

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "dymesh/core/units.h"
+
 namespace dymesh {
 namespace {
 
@@ -83,6 +85,20 @@ void SetReachStep(const Scenario& scenario, const std::vector<std::shared_ptr<co
     }
 }
 
+// the `gravity` bodies' ground support: x'' = -omega^2 x - 2 omega x' (critically damped) stepped as
+// the host does (v += h a, then x += h v) maps (v, x) by a matrix of trace 2 - 2 omega h - (omega h)^2 and
+// determinant 1 - 2 omega h; both roots stay inside the unit circle (Jury: |det| < 1, 1 + det > |trace|)
+// while omega h < 2 (sqrt 2 - 1) = 0.83
+void SetGroundLimits(const Scenario& scenario, TimeStepGuide* guide) {
+  const auto gravity = std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
+                                    [](const BodySpec& b) { return b.motion == MotionModel::kGravityGround; });
+  if (gravity == scenario.bodies.end()) return;
+  const double omega = std::sqrt(units::kStandardGravity / kGroundStaticDeflection);
+  guide->ground_body = static_cast<int>(gravity - scenario.bodies.begin());
+  guide->ground_omega = omega;
+  guide->ground_stable_limit = 2.0 * (std::sqrt(2.0) - 1.0) / omega;
+}
+
 }  // namespace
 
 TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::shared_ptr<const BodyModel>>& models) {
@@ -118,19 +134,30 @@ TimeStepGuide GuideTimeStep(const Scenario& scenario, const std::vector<std::sha
                             2.0 / omega};
     }
   SetReachStep(scenario, models, &guide);
+  SetGroundLimits(scenario, &guide);
   return guide;
 }
 
 void RefuseUnstableStep(const Scenario& scenario, const TimeStepGuide& guide) {
-  if (!guide.bounded || scenario.time_step <= guide.stable_limit) return;
   char text[400];
-  std::snprintf(text, sizeof text,
-                "step %g s is beyond the stable limit %.3g s of \"%s\" against \"%s\" (contact period %.3g s): the "
-                "integration would diverge; use at most %.3g s (recommended %.3g s)",
-                scenario.time_step, guide.stable_limit, scenario.bodies[guide.body_a].name.c_str(),
-                scenario.bodies[guide.body_b].name.c_str(), guide.contact_period, guide.stable_limit,
-                guide.recommended_step);
-  throw InputError(scenario.file, "time.step", text);
+  if (guide.bounded && scenario.time_step > guide.stable_limit) {
+    std::snprintf(text, sizeof text,
+                  "step %g s is beyond the stable limit %.3g s of \"%s\" against \"%s\" (contact period %.3g s): the "
+                  "integration would diverge; use at most %.3g s (recommended %.3g s)",
+                  scenario.time_step, guide.stable_limit, scenario.bodies[guide.body_a].name.c_str(),
+                  scenario.bodies[guide.body_b].name.c_str(), guide.contact_period, guide.stable_limit,
+                  guide.recommended_step);
+    throw InputError(scenario.file, "time.step", text);
+  }
+  if (guide.ground_body >= 0 && scenario.time_step > guide.ground_stable_limit) {
+    std::snprintf(text, sizeof text,
+                  "step %g s is beyond the stable limit %.3g s of the ground support under \"%s\" (motion "
+                  "\"gravity\": its weight on a critically damped support of %.0f rad/s): the integration would "
+                  "diverge; use at most %.3g s",
+                  scenario.time_step, guide.ground_stable_limit, scenario.bodies[guide.ground_body].name.c_str(),
+                  guide.ground_omega, guide.ground_stable_limit);
+    throw InputError(scenario.file, "time.step", text);
+  }
 }
 
 }  // namespace dymesh

@@ -159,7 +159,11 @@ std::string OverallTable(const Context& c) {
            one(FormatFixed(s.kinetic_before * u.energy, 0) + " / " + FormatFixed(s.kinetic_after * u.energy, 0)));
   t += Row(std::string("crush + friction energy [") + u.energy_name + "]",
            one(FormatFixed((s.crush_energy + s.friction_energy) * u.energy, 0)));
-  t += Row("energy balance error (KE lost - crush - friction) / KE lost", one(FormatFixed(100.0 * s.energy_balance_error, 3) + " %"));
+  if (s.support_work != 0.0)
+    t += Row(std::string("work of weight and ground support (motion gravity) [") + u.energy_name + "]",
+             one(FormatFixed(s.support_work * u.energy, 0)));
+  t += Row("energy balance error (KE lost + support work - crush - friction) / KE lost",
+           one(FormatFixed(100.0 * s.energy_balance_error, 3) + " %"));
   t += Row(std::string("node-law energy [") + u.energy_name + "] / discontinuity (crush work - node law)",
            one(FormatFixed(s.law_energy * u.energy, 0) + " / " +
                (s.crush_energy != 0.0 ? FormatFixed(100.0 * s.energy_discontinuity / s.crush_energy, 1) + " %" : "-")));

@@ -96,30 +96,36 @@ std::string MomentPlot(const Context& c) {
   return Figure(RenderLinePlot(p), "Collision moment about each body's CG, body z axis (positive turns the nose right).");
 }
 
-// kinetic, crush and friction energy of the moving bodies, and their sum (flat when balanced)
+// kinetic, crush and friction energy of the moving bodies (and, with a `gravity` body, the work its
+// weight and ground support took), and their sum (flat when balanced)
 std::string EnergyPlot(const Context& c) {
   const OutputUnits& u = c.units;
   LinePlot p = TimePlot(c, "plot-energy", "Energy (balance error " + FormatFixed(100.0 * c.summary.energy_balance_error, 2) + " %)",
                         std::string("energy [") + u.energy_name + "]");
-  std::vector<double> kinetic, crush, friction, total;
+  std::vector<double> kinetic, crush, friction, support, total;
   for (const Sample& s : c.sim.history()) {
-    double k = 0.0, cr = 0.0, fr = 0.0;
+    double k = 0.0, cr = 0.0, fr = 0.0, su = 0.0;
     for (int i = 0; i < c.sim.engine().body_count(); ++i) {
       if (Moves(c.sim, i)) k += KineticEnergy(c.sim.engine().model(i), s.bodies[i].rigid);
       cr += s.bodies[i].crush_energy;
       fr += s.bodies[i].friction_energy;
+      su -= s.bodies[i].support_work;
     }
     kinetic.push_back(k * u.energy), crush.push_back(cr * u.energy), friction.push_back(fr * u.energy);
-    total.push_back((k + cr + fr) * u.energy);
+    support.push_back(su * u.energy);
+    total.push_back((k + cr + fr + su) * u.energy);
   }
   const std::vector<double> t = Times(c.sim);
+  const bool supported = c.summary.support_work != 0.0;
   p.series.push_back({"kinetic", t, kinetic, "#1f5fbf"});
   p.series.push_back({"crush", t, crush, "#d62728"});
   p.series.push_back({"friction", t, friction, "#2ca02c"});
-  PlotSeries sum{"kinetic + crush + friction", t, total, "#222222"};
+  if (supported) p.series.push_back({"taken by weight and ground support", t, support, "#9467bd"});
+  PlotSeries sum{supported ? "kinetic + crush + friction + support" : "kinetic + crush + friction", t, total, "#222222"};
   sum.dashed = true;
   p.series.push_back(std::move(sum));
-  return Figure(RenderLinePlot(p), "Kinetic energy of the moving bodies, work of the crush law and friction. "
+  return Figure(RenderLinePlot(p), "Kinetic energy of the moving bodies, work of the crush law and friction"
+                                   " (and the work a gravity body's weight and ground support took). "
                                    "Their sum stays at the initial kinetic energy when the energy balances.");
 }
 

@@ -12,6 +12,7 @@
 #include "dymesh/accel/embree_locator.h"
 #include "dymesh/analysis/summary.h"
 #include "dymesh/analysis/run_assessment.h"
+#include "dymesh/core/rigid_body.h"
 #include "dymesh/core/simulation.h"
 #include "dymesh/core/time_step_guide.h"
 #include "run_to_end.h"
@@ -148,6 +149,51 @@ TEST(TimeStepGuide, StiffQuadraticLawGetsAStepThatKeepsTheEnergyAccount) {
   std::printf("[measured] C3 = 1e5 lb/in^4: recommended step %.3g s (stable limit %.3g s); kinetic energy kept "
               "%.1f %% at 0.5 ms, %.2f %% at the recommended step\n", g.recommended_step, g.stable_limit,
               100 * coarse.kinetic_after / coarse.kinetic_before, 100 * fine.kinetic_after / fine.kinetic_before);
+}
+
+// A `gravity` body's ground support (its weight over kGroundStaticDeflection, critically damped) stepped
+// as the host steps it: v += h (-omega^2 x - 2 omega v), then x += h v, maps (v, x) by a matrix of trace
+// 2 - 2 omega h - (omega h)^2 and determinant 1 - 2 omega h, whose roots stay inside the unit circle
+// (Jury: |det| < 1, 1 + det > |trace|) while omega h < 2 (sqrt 2 - 1). Before, the guide left it out:
+// 0.04 s passed as stable, and the p406 at 5 mph into the barrier left it rising at 8.9 mph
+TEST(TimeStepGuide, GroundSupportsStableLimitIsTheClosedForm) {
+  Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  s.bodies[0].motion = MotionModel::kGravityGround;
+  const auto models = BuildBodyModels(s);
+  const TimeStepGuide g = GuideTimeStep(s, models);
+  const double omega = std::sqrt(u::kStandardGravity / kGroundStaticDeflection);
+  ASSERT_EQ(g.ground_body, 0);
+  EXPECT_NEAR(g.ground_stable_limit, 2.0 * (std::sqrt(2.0) - 1.0) / omega, 1e-15);
+  // the host itself: a 0.1 m/s vertical kick, its largest vertical speed over steps 300-400 (2.5-3.4 s):
+  // 2 % under the limit the roots' modulus is 0.98 a step, so it has died out (0.98^300 = 2e-3, seen
+  // 1e-9); 2 % over it the body bounces until the support lets go, for good (seen 0.45)
+  auto late_speed = [&](double step) {
+    RigidState state;
+    state.velocity.z() = 0.1;
+    double fastest = 0.0;
+    for (int i = 0; i < 400; ++i) {
+      const ExternalLoads loads = MotionModelLoads(MotionModel::kGravityGround, *models[0], state, 0.0);
+      IntegrateRigidBody(*models[0], MotionModel::kGravityGround, loads.force_earth, loads.moment_body, step, &state);
+      if (i >= 300) fastest = std::max(fastest, std::abs(state.velocity.z()));
+    }
+    return fastest / 0.1;
+  };
+  EXPECT_LT(late_speed(0.98 * g.ground_stable_limit), 1e-6);
+  EXPECT_GT(late_speed(1.02 * g.ground_stable_limit), 0.1);
+  // a scenario's step beyond it is refused at time.step, naming the body; one under it is accepted
+  s.time_step = 1.01 * g.ground_stable_limit;
+  try {
+    RefuseUnstableStep(s, GuideTimeStep(s, models));
+    FAIL() << "accepted a step beyond the ground support's stable limit";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "time.step");
+    EXPECT_NE(std::string(e.what()).find("ground support under \"box\""), std::string::npos) << e.what();
+  }
+  s.time_step = 0.99 * g.ground_stable_limit;
+  EXPECT_NO_THROW(RefuseUnstableStep(s, GuideTimeStep(s, models)));
+  std::printf("[measured] ground support: stable limit %.4g s; late vertical speed over the kick %.2g at 0.98 of "
+              "it, %.2g at 1.02\n", g.ground_stable_limit, late_speed(0.98 * g.ground_stable_limit),
+              late_speed(1.02 * g.ground_stable_limit));
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ struct BodySummary {
   double crush_energy = 0.0;     ///< [J] ledger: share of the normal contact work
   double friction_energy = 0.0;  ///< [J] ledger: share of the friction work
   double law_energy = 0.0;       ///< [J] work of the node law on this body's nodes
+  double support_work = 0.0;     ///< [J] work of its motion model's loads (`gravity`: weight and ground support)
   Vec3 final_velocity{0, 0, 0};  ///< [m/s] earth frame
   double final_yaw_rate = 0.0;   ///< [rad/s]
   CrushProfile crush_profile;    ///< CRASH3-style C1..C6 on the damaged face
@@ -78,7 +79,9 @@ struct Summary {
   double crush_energy = 0.0, friction_energy = 0.0;         ///< [J] ledger (work of the applied loads)
   double law_energy = 0.0;            ///< [J] node-law work, all bodies
   double energy_discontinuity = 0.0;  ///< [J] ledger crush work - node-law work
-  double energy_balance_error = 0.0;  ///< (KE lost - crush - friction) / KE lost; -1 (+1) for work with none lost
+  double support_work = 0.0;          ///< [J] work of the motion models' loads, all bodies (Simulation::support_work)
+  /// (KE lost + support work - crush - friction) / KE lost; -1 (+1) for work with none lost
+  double energy_balance_error = 0.0;
   std::vector<PairSummary> pairs;     ///< every pair that carried a load, in the order their contact began
   /// the main collision: the pair with the largest impulse (-1 without contact); the two fields
   /// below repeat its speeds

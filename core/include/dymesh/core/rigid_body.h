@@ -19,6 +19,11 @@ enum class MotionModel {
 /// other than about the vertical, do not move it.
 inline bool HoldsHeight(MotionModel motion) { return motion == MotionModel::kPlanar || motion == MotionModel::kFixed; }
 
+/// Static sag [m] of the `gravity` model's ground support under the body's weight: its stiffness is
+/// weight / sag and it is critically damped, so its natural frequency sqrt(g / sag) (99 rad/s) is the
+/// same whatever the body's mass.
+inline constexpr double kGroundStaticDeflection = 0.001;
+
 /// Extra loads a host adds to a body: force in the earth frame, moment in the body frame.
 struct ExternalLoads {
   Vec3 force_earth{0, 0, 0};  ///< [N]

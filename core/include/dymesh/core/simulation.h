@@ -22,6 +22,7 @@ struct BodySample {
   double law_energy = 0.0;      ///< [J] cumulative node-law work on the nodes
   double crush_energy = 0.0;    ///< [J] cumulative ledger crush (normal contact) work
   double friction_energy = 0.0; ///< [J] cumulative ledger friction work
+  double support_work = 0.0;    ///< [J] cumulative work of the motion model's loads (Simulation::support_work)
   double contact_area = 0.0;    ///< [m^2] area of the body's own nodes in contact over the step (PairLoads)
   double untaken_share = 0.0;   ///< [m] its crush the other bodies' nodes left to its own (PairLoads, the largest pair's)
 };
@@ -140,6 +141,10 @@ class Simulation {
   double last_contact_time() const { return last_contact_time_; }
   /// Every pair that carried a collision load, in the order their contact began.
   const std::vector<PairContact>& pair_contacts() const { return pair_contacts_; }
+  /// [J] work of the motion model's own loads on a body so far (a `gravity` body's weight and ground
+  /// support; 0 for the others and in force-provider mode, where the host applies its own), booked as
+  /// the contact work is: force times the step's mean velocity
+  double support_work(int body) const { return support_work_[body]; }
 
  private:
   void Record(const StepResult* step, double dt = 0.0);
@@ -154,6 +159,7 @@ class Simulation {
   Scenario scenario_;
   std::unique_ptr<ContactEngine> engine_;
   std::vector<double> rest_height_;
+  std::vector<double> support_work_;     // [J] per body, the motion model's loads' work (support_work)
   std::vector<double> farthest_vertex_;  // [m] per body, its rest vertex farthest from the CG (the host-motion comparison)
   std::vector<Sample> history_;
   ContactDiagnostics diagnostics_;
