@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dymesh/core/simulation.h"
+#include "recorded_states.h"
 
 namespace dymesh {
 namespace {
@@ -90,22 +91,6 @@ class RestSurfaceAlongLine {
   double cell_;
   std::unordered_map<std::int64_t, Cell> cells_;
 };
-
-// the recorded states from the first contact on, at most kStates of them evenly spaced, and the last
-// (an obstacle that went in between the nodes may have come out the far side by the end)
-constexpr std::size_t kStates = 256;
-std::vector<const Sample*> StatesFromFirstContact(const Simulation& sim) {
-  std::vector<const Sample*> states;
-  const std::vector<Sample>& history = sim.history();
-  if (sim.first_contact_time() < 0.0 || history.empty()) return states;
-  const double slack = 0.5 * sim.scenario().time_step;  // the recorded times' round-off
-  std::size_t first = 0;
-  while (first + 1 < history.size() && history[first].time < sim.first_contact_time() - slack) ++first;
-  const std::size_t stride = std::max<std::size_t>(1, (history.size() - first) / kStates);
-  for (std::size_t i = first; i < history.size(); i += stride) states.push_back(&history[i]);
-  if (states.back() != &history.back()) states.push_back(&history.back());
-  return states;
-}
 
 // a closed shell but for a few holes: a front and a back everywhere except at them (the milk truck,
 // 8 open edges for 3,624 triangles, a hole in its underside). The display cars' window gaps and
