@@ -70,6 +70,9 @@ BodyInside DeepestBodyInside(const Simulation& sim, const PairSummary& p, const 
   return out;
 }
 
+// an impulse this much horizontal (its horizontal part's length, unit impulse) is judged in plan
+constexpr double kMostlyHorizontal = 0.5;
+
 // whether a pair still closing along its impulse at the end went into each other: one body inside the
 // other (obstacle_inside), or its rest plan outline farther into the other's along the impulse than the
 // two crushed plus the search's reach. A glancing contact slides the bodies past each other, so along a
@@ -78,6 +81,8 @@ BodyInside DeepestBodyInside(const Simulation& sim, const PairSummary& p, const 
 // with their corners 6-46 in over, 194-330 in for 25 in)
 bool WentThrough(const Simulation& sim, const Summary& s, const PairSummary& p, const BodyInside& inside) {
   if (inside.vertex >= 0) return true;
+  // an impulse within 30 deg of the vertical: the plan cannot tell
+  if (std::hypot(p.direction.x(), p.direction.y()) < kMostlyHorizontal) return true;
   const double crushed = s.bodies[p.a].max_dynamic_crush + s.bodies[p.b].max_dynamic_crush;
   return DeepestPlanOverlap(sim, p.a, p.b, p.direction) > crushed + sim.scenario().contact.toofar_maximum;
 }

@@ -125,8 +125,8 @@ struct TargetGrids {
   std::optional<SegmentGrid> surface;
 };
 
-// gap from `mover`'s surface to `target`'s along the earth direction `grids` were cast along: the smallest entering distance
-// of its vertices, or minus the deepest inside depth (distance back out) of its vertices and of the
+// gap from `mover`'s surface to `target`'s along the earth direction `grids` were cast along: the
+// smallest entering distance of its vertices, or minus the deepest inside depth (distance back out) of its vertices and of the
 // parts of its edges that pass through the target's surface (where no vertex of either body lies
 // inside the other, as a coarse box threaded on a wall: before, "gap 2.25 m" and a run through it)
 double DirectedGap(const PosedBody& mover, const PosedBody& target, double length, TargetGrids* grids) {
