@@ -29,19 +29,43 @@ std::vector<Vec3> OutlineVertices(const BodyModel& model) {
   return on_hull;
 }
 
+// index of a convex polygon's lowest corner (least y, then least x): where its edges' angles start
+std::size_t Lowest(const std::vector<Vec2>& p) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (p[i].y() < p[best].y() || (p[i].y() == p[best].y() && p[i].x() < p[best].x())) best = i;
+  return best;
+}
+
+// Minkowski sum of two counter-clockwise convex polygons: their edges merged by angle from each one's
+// lowest corner (linear in their corners; a collinear pair of edges is left as two)
+std::vector<Vec2> MinkowskiSum(const std::vector<Vec2>& p, const std::vector<Vec2>& q) {
+  const std::size_t np = p.size(), nq = q.size(), p0 = Lowest(p), q0 = Lowest(q);
+  std::vector<Vec2> sum;
+  sum.reserve(np + nq);
+  std::size_t i = 0, j = 0;
+  while (i < np || j < nq) {
+    sum.push_back(p[(p0 + i) % np] + q[(q0 + j) % nq]);
+    const Vec2 ep = p[(p0 + i + 1) % np] - p[(p0 + i) % np], eq = q[(q0 + j + 1) % nq] - q[(q0 + j) % nq];
+    const double turn = ep.x() * eq.y() - ep.y() * eq.x();  // > 0: p's edge comes first
+    if (j == nq || (i < np && turn > 0.0)) ++i;
+    else if (i == np || turn < 0.0) ++j;
+    else ++i, ++j;
+  }
+  return sum;
+}
+
 // how far `a` must move along unit `n` to leave `b`: both convex, so the set of moves t that keep them
-// touching, b - a (the hull of every corner difference), holds the origin while they overlap, and the
-// move leaves it where the ray from the origin along n crosses its boundary (0 when they are apart)
+// touching, b - a (the Minkowski sum of b and -a), holds the origin while they overlap, and the move
+// leaves it where the ray from the origin along n crosses its boundary (0 when they are apart)
 double DepthAlong(const std::vector<Vec2>& a, const std::vector<Vec2>& b, const Vec2& n) {
-  std::vector<Vec2> differences;
-  differences.reserve(a.size() * b.size());
-  for (const Vec2& q : b)
-    for (const Vec2& p : a) differences.push_back(q - p);
-  const std::vector<Vec2> touching = ConvexHull(std::move(differences));
+  std::vector<Vec2> minus_a;
+  for (const Vec2& p : a) minus_a.push_back(-p);  // a point reflection keeps the corners counter-clockwise
+  const std::vector<Vec2> touching = MinkowskiSum(b, minus_a);
   double exit = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < touching.size(); ++i) {
     const Vec2 e = touching[(i + 1) % touching.size()] - touching[i];
-    const Vec2 outward(e.y(), -e.x());  // counter-clockwise hull: the outward side
+    const Vec2 outward(e.y(), -e.x());  // counter-clockwise: the outward side
     const double ahead = outward.dot(touching[i]);  // > 0 for every edge while the origin is inside
     if (ahead <= 0.0) return 0.0;
     if (outward.dot(n) > 0.0) exit = std::min(exit, ahead / outward.dot(n));
