@@ -149,7 +149,7 @@ dm_status dm_world_create(const dm_world_desc* desc, const dm_body_desc* bodies,
     NotNull(bodies, "bodies");
     NotNull(out, "out");
     *out = nullptr;
-    dymesh::api::ArrayWorld built = dymesh::api::WorldFromArrays(*desc, bodies, body_count);
+    dymesh::api::ArrayWorld built = dymesh::api::WorldFromArrays(desc, bodies, body_count);
     auto world = std::make_unique<dm_world>();
     world->sim = std::make_unique<dymesh::Simulation>(built.scenario, std::move(built.models), Locators());
     *out = world.release();

@@ -13,6 +13,7 @@
 #include "dymesh/core/units.h"
 #include "dymesh/io/body_models.h"
 #include "dymesh/io/printable.h"
+#include "dymesh/io/scenario_json.h"
 
 namespace dymesh::api {
 namespace {
@@ -23,6 +24,9 @@ constexpr size_t kBodyDescFirstSize = offsetof(dm_body_desc, motion);
 // the largest element a later header may make dm_body_desc (a stride beyond it is a wrong size,
 // not a newer struct: read as one, it walked the array off the caller's memory)
 constexpr size_t kBodyDescLargestSize = 4096;
+// the same for dm_world_desc
+constexpr size_t kWorldDescFirstSize = offsetof(dm_world_desc, search_direction);
+constexpr size_t kWorldDescLargestSize = 4096;
 
 // a value refused outside its physical range and warned outside the plausible one (io's
 // CheckPhysical, in SI)
@@ -161,9 +165,46 @@ std::shared_ptr<const BodyModel> BodyFromDesc(const dm_body_desc& d, int i, Body
       MakeBodyModel(d.name, std::move(mesh), k, spec->mass, inertia, d.restitution, d.friction, rigid));
 }
 
+// the caller's world description: fields its header did not have read as 0 (their defaults), fields
+// of a newer header are not read
+dm_world_desc WorldDescFrom(const dm_world_desc* world) {
+  size_t size = 0;
+  std::memcpy(&size, world, sizeof size);
+  Require(size >= kWorldDescFirstSize && size <= kWorldDescLargestSize,
+          "world.struct_size: expected sizeof(dm_world_desc) (" + std::to_string(sizeof(dm_world_desc)) +
+              " in this library), got " + std::to_string(size));
+  dm_world_desc d;
+  std::memset(&d, 0, sizeof d);
+  std::memcpy(&d, world, std::min(size, sizeof d));
+  return d;
+}
+
+// the contact search a world description asks for (0: the defaults); a specified direction given to
+// another search is refused, as in a scenario file (it would not act)
+void ReadSearch(const dm_world_desc& d, ContactOptions* o) {
+  const SearchDirection searches[] = {o->search_direction, SearchDirection::kVelocity,
+                                      SearchDirection::kLocalAverageNormal, SearchDirection::kPolyNormal,
+                                      SearchDirection::kSpecified};
+  Require(d.search_direction >= 0 && d.search_direction <= DM_SEARCH_SPECIFIED,
+          "world.search_direction: expected a dm_search_direction (0..4), got " + std::to_string(d.search_direction));
+  o->search_direction = searches[d.search_direction];
+  const StopRule rules[] = {o->stop_rule, StopRule::kAfterOne, StopRule::kBestOfTwo, StopRule::kBestOfAll};
+  Require(d.stop_rule >= 0 && d.stop_rule <= DM_STOP_BEST_OF_ALL,
+          "world.stop_rule: expected a dm_stop_rule (0..3), got " + std::to_string(d.stop_rule));
+  o->stop_rule = rules[d.stop_rule];
+  const Vec3 v(d.specified_direction[0], d.specified_direction[1], d.specified_direction[2]);
+  Require(v.allFinite(), "world.specified_direction: expected finite components");
+  const double largest = v.cwiseAbs().maxCoeff();
+  if (o->search_direction != SearchDirection::kSpecified) {
+    Require(largest == 0.0, "world.specified_direction: acts only with DM_SEARCH_SPECIFIED; leave it zero");
+    return;
+  }
+  Require(largest > 0.0, "world.specified_direction: expected a vector of nonzero length with DM_SEARCH_SPECIFIED");
+  o->specified_direction = (v / largest).normalized();  // scaled first: tiny or huge components stay exact
+}
+
 // the scenario part of a world description
 Scenario ScenarioFromDesc(const dm_world_desc& d) {
-  Require(d.struct_size >= sizeof(dm_world_desc), "world.struct_size: expected sizeof(dm_world_desc)");
   Require(std::isfinite(d.time_step) && d.time_step > 0, "world.time_step: expected a finite step > 0");
   Require(std::isfinite(d.duration) && d.duration >= d.time_step, "world.duration: expected a duration >= the step");
   Require(d.passes_per_step >= 0 && d.passes_per_step <= 1000, "world.passes_per_step: expected 0..1000");
@@ -177,6 +218,7 @@ Scenario ScenarioFromDesc(const dm_world_desc& d) {
   s.duration = d.duration;
   s.stop_at_separation = d.stop_at_separation != 0;
   if (d.passes_per_step > 0) s.contact.passes_per_step = d.passes_per_step;
+  ReadSearch(d, &s.contact);
   return s;
 }
 
@@ -194,10 +236,10 @@ RigidState ToRigid(const dm_body_state& s, int body) {
   return r;
 }
 
-ArrayWorld WorldFromArrays(const dm_world_desc& world, const dm_body_desc* bodies, int32_t body_count) {
+ArrayWorld WorldFromArrays(const dm_world_desc* world, const dm_body_desc* bodies, int32_t body_count) {
   Require(body_count >= 2, "body_count: expected at least 2 bodies, got " + std::to_string(body_count));
   ArrayWorld out;
-  out.scenario = ScenarioFromDesc(world);
+  out.scenario = ScenarioFromDesc(WorldDescFrom(world));
   out.scenario.bodies.resize(body_count);
   bool any_deformable = false;
   for (int i = 0; i < body_count; ++i) {
@@ -210,6 +252,7 @@ ArrayWorld WorldFromArrays(const dm_world_desc& world, const dm_body_desc* bodie
     any_deformable = any_deformable || !spec.rigid;
   }
   Require(any_deformable, "bodies: every body is rigid: at least one must be deformable");
+  WarnSharedSpecifiedDirection(&out.scenario);
   return out;
 }
 

@@ -824,11 +824,13 @@ void CheckRigidBodies(const Source& src, Scenario* s) {
                                    "\" are both rigid: no contact force acts between them, they pass through each other"});
 }
 
+}  // namespace
+
 // warns of the specified search direction between two deformable bodies: one body-frame direction
 // serves every body as slave, so where two cars push back along different lines (side, oblique and
 // rear impacts) no one direction fits both, and one sinks into the other (a sweep of options,
 // 2026-11-28: the side demo 19 in, a 45 deg impact 35 in past the struck car's crush, unmarked)
-void CheckSpecifiedDirection(Scenario* s) {
+void WarnSharedSpecifiedDirection(Scenario* s) {
   if (s->contact.search_direction != SearchDirection::kSpecified) return;
   const auto deformable = [](const BodySpec& b) { return !b.rigid; };
   if (std::count_if(s->bodies.begin(), s->bodies.end(), deformable) < 2) return;
@@ -839,8 +841,6 @@ void CheckSpecifiedDirection(Scenario* s) {
        "one sinks into the other, and the crush and energies are not physical; use it head-on, or against "
        "rigid bodies"});
 }
-
-}  // namespace
 
 Scenario ParseScenario(const std::string& json_text, const std::string& file) {
   const Json root = ParseJsonDocument(json_text, file);
@@ -870,7 +870,7 @@ Scenario ParseScenario(const std::string& json_text, const std::string& file) {
   }
   ResolvePlacements(src, placements, &s);
   CheckRigidBodies(src, &s);
-  CheckSpecifiedDirection(&s);
+  WarnSharedSpecifiedDirection(&s);
   return s;
 }
 

@@ -4,6 +4,7 @@
  * Usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR. Prints each failed check; exits 1 if any failed. */
 #define _POSIX_C_SOURCE 200809L /* strdup */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,7 +63,7 @@ static void test_arguments(const char* scenario) {
   size_t needed = 0;
   char small[8];
   CHECK(dm_world_copy_summary_json(w, small, sizeof small, &needed) == DM_ERROR_ARGUMENT && needed > sizeof small);
-  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.2, 1, 2};
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.2, .stop_at_separation = 1, .passes_per_step = 2};
   dm_body_desc one;
   memset(&one, 0, sizeof one);
   CHECK(dm_world_create(&desc, &one, 1, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "at least 2 bodies"));
@@ -162,7 +163,7 @@ static void make_car_and_wall(car_and_wall* s, dm_body_state car, double wall_x,
 /* the box car at 13.4 m/s, 1 cm before the wall (0.5 ms steps, 0.3 s, stop at separation): a new world */
 static dm_world* car_into_wall(car_and_wall* s) {
   make_car_and_wall(s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
-  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
   dm_world* w = NULL;
   CHECK(dm_world_create(&desc, s->bodies, 2, &w) == DM_OK);
   return w;
@@ -208,7 +209,7 @@ static dm_body_state coast(size_t struct_size, int32_t motion, double down) {
     s.bodies[i].struct_size = struct_size;
     memcpy(packed + i * struct_size, &s.bodies[i], struct_size);
   }
-  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.1, 0, 2};
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.1, .stop_at_separation = 0, .passes_per_step = 2};
   dm_body_state end;
   memset(&end, 0, sizeof end);
   dm_world* w = NULL;
@@ -249,7 +250,7 @@ static void test_motion(void) {
   bad[1] = bad[0];
   bad[1].name = "b";
   bad[1].initial.position[0] = 5.0;
-  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
   dm_world* w = NULL;
   CHECK(dm_world_create(&desc, bad, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].motion"));
   bad[0].motion = DM_MOTION_DEFAULT;
@@ -269,7 +270,7 @@ static void test_motion(void) {
 static void test_create_checks(void) {
   car_and_wall s;
   const dm_body_state moving = {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}};
-  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
   dm_world* w = NULL;
   /* a struct_size far beyond any dm_body_desc was taken as the stride and read past the array */
   make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
@@ -363,6 +364,93 @@ static void test_states(void) {
   dm_world_destroy(w);
 }
 
+/* the box car at 13.4 m/s into the wall with `desc`'s search; its delta-V along x [m/s] and its most
+   crushed vertex's deformation (body axes); -1 / zeros when refused */
+static double searched(const dm_world_desc* desc, int deformable_wall, double deformation[3]) {
+  car_and_wall s;
+  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+  if (deformable_wall) s.bodies[1].rigid = 0, s.bodies[1].stiffness_a = 1.0e5, s.bodies[1].stiffness_b = 1.0e6;
+  memset(deformation, 0, 3 * sizeof(double));
+  dm_world* w = NULL;
+  if (dm_world_create(desc, s.bodies, 2, &w) != DM_OK) return -1.0;
+  CHECK(dm_world_run(w) == DM_OK);
+  double dv[3];
+  CHECK(dm_body_delta_v(w, 0, dv) == DM_OK);
+  const double* delta = NULL;
+  int32_t n = 0;
+  CHECK(dm_body_deformation(w, 0, &delta, &n) == DM_OK);
+  for (int v = 0; v < n; ++v)
+    if (hypot(hypot(delta[3 * v], delta[3 * v + 1]), delta[3 * v + 2]) >
+        hypot(hypot(deformation[0], deformation[1]), deformation[2]))
+      memcpy(deformation, delta + 3 * v, 3 * sizeof(double));
+  const char* text = NULL;
+  CHECK(dm_world_summary_json(w, &text) == DM_OK);
+  const int shared = contains(text, "specified_direction_shared");
+  CHECK(shared == (desc->search_direction == DM_SEARCH_SPECIFIED && deformable_wall));
+  dm_world_destroy(w);
+  return dv[0]; /* an SI world: m/s */
+}
+
+/* a world from arrays takes the scenario file's contact search and stop rule (appended 2026-11-28): an
+   older caller's shorter struct runs with the defaults; every search stops the car as the barrier's
+   closed form says; a specified direction pushes the crush along it; bad values refused */
+static void test_search_options(void) {
+  double crush[3];
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+  const double reference = searched(&desc, 0, crush);
+  /* the older struct, garbage beyond its end: the defaults, bit for bit */
+  unsigned char older[sizeof(dm_world_desc)];
+  memset(older, 0x7f, sizeof older);
+  dm_world_desc shorter = desc;
+  shorter.struct_size = offsetof(dm_world_desc, search_direction);
+  memcpy(older, &shorter, shorter.struct_size);
+  CHECK(searched((const dm_world_desc*)older, 0, crush) == reference);
+  /* a rigid wall, frictionless, e = 0.1 at the car: delta-V = -(1 + e) v = -14.74 m/s; 2 %: the 8-node car's
+     rebound over a 0.5 ms step (the barrier validation row) */
+  const int32_t searches[3] = {DM_SEARCH_VELOCITY, DM_SEARCH_LOCAL_AVERAGE_NORMAL, DM_SEARCH_POLY_NORMAL};
+  const int32_t rules[3] = {DM_STOP_AFTER_ONE, DM_STOP_BEST_OF_TWO, DM_STOP_BEST_OF_ALL};
+  for (int k = 0; k < 3; ++k) {
+    desc.search_direction = searches[k];
+    desc.stop_rule = rules[k];
+    const double dv = searched(&desc, 0, crush);
+    CHECK(fabs(dv + 1.1 * 13.4) < 0.02 * 1.1 * 13.4);
+    CHECK(crush[0] < 0.0 && fabs(crush[1]) < 1e-9 * fabs(crush[0])); /* the front pushed back along x */
+    printf("search %d, stop rule %d: delta-V %.4f m/s (closed form %.4f)\n", searches[k], rules[k], dv, -1.1 * 13.4);
+  }
+  /* specified: the direction each slave node looks along, in its body's axes. Along the car's axis it
+     finds the wall as the velocity search does; sideways it never looks ahead, so the car goes on into
+     the wall untouched (the field reaches the engine), and against a deformable wall it is warned */
+  desc.search_direction = DM_SEARCH_SPECIFIED;
+  desc.stop_rule = DM_STOP_DEFAULT;
+  for (int sign = -1; sign <= 1; sign += 2) {
+    desc.specified_direction[0] = 2.0 * sign;
+    printf("specified [%d, 0, 0]: delta-V %.4f m/s\n", sign, searched(&desc, 0, crush));
+  }
+  desc.specified_direction[0] = 0.0;
+  desc.specified_direction[1] = -3.0;
+  printf("specified [0, -1, 0]: delta-V %.4f m/s\n", searched(&desc, 0, crush));
+  CHECK(searched(&desc, 1, crush) <= 0.0);
+  /* refused naming the field */
+  dm_world* w = NULL;
+  car_and_wall s;
+  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+  desc.specified_direction[1] = 0.0;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.specified_direction: expected a vector of nonzero length"));
+  desc.search_direction = DM_SEARCH_VELOCITY;
+  desc.specified_direction[2] = 1.0;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "acts only with DM_SEARCH_SPECIFIED"));
+  desc.specified_direction[2] = 0.0;
+  desc.search_direction = 9;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.search_direction"));
+  desc.search_direction = DM_SEARCH_DEFAULT;
+  desc.stop_rule = -1;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.stop_rule"));
+  desc.stop_rule = DM_STOP_DEFAULT;
+  desc.struct_size = 3;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.struct_size"));
+  CHECK(w == NULL);
+}
+
 int main(int argc, char** argv) {
   if (argc != 4) {
     fprintf(stderr, "usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR\n");
@@ -377,6 +465,7 @@ int main(int argc, char** argv) {
   test_motion();
   test_create_checks();
   test_states();
+  test_search_options();
   if (failures) fprintf(stderr, "%d checks failed\n", failures);
   return failures ? 1 : 0;
 }

@@ -106,6 +106,24 @@ typedef struct dm_body_desc {
   int32_t motion;           /**< a dm_motion; appended 2026-11-24: a struct_size that ends before it means DM_MOTION_DEFAULT */
 } dm_body_desc;
 
+/** Where a slave node looks for the master surface (a scenario's contact.search_direction; README
+ *  "The model"): where to look, not the force's direction, which is the master surface's normal. */
+typedef enum dm_search_direction {
+  DM_SEARCH_DEFAULT = 0,              /**< the default, DM_SEARCH_VELOCITY */
+  DM_SEARCH_VELOCITY = 1,             /**< along the relative velocity ("velocity") */
+  DM_SEARCH_LOCAL_AVERAGE_NORMAL = 2, /**< along the node's averaged surface normal ("local_average_normal") */
+  DM_SEARCH_POLY_NORMAL = 3,          /**< along the normal of the polygon first met ("poly_normal") */
+  DM_SEARCH_SPECIFIED = 4             /**< along dm_world_desc.specified_direction ("specified") */
+} dm_search_direction;
+
+/** Which of the faces a search meets a node takes (a scenario's contact.stop_rule). */
+typedef enum dm_stop_rule {
+  DM_STOP_DEFAULT = 0,     /**< the default, DM_STOP_BEST_OF_ALL */
+  DM_STOP_AFTER_ONE = 1,   /**< the first face found ("after_one") */
+  DM_STOP_BEST_OF_TWO = 2, /**< the better of the first two ("best_of_two") */
+  DM_STOP_BEST_OF_ALL = 3  /**< the best of all found ("best_of_all") */
+} dm_stop_rule;
+
 /** The run as a whole (dm_world_create). */
 typedef struct dm_world_desc {
   size_t struct_size;        /**< sizeof(dm_world_desc) */
@@ -113,6 +131,12 @@ typedef struct dm_world_desc {
   double duration;           /**< [s] */
   int32_t stop_at_separation; /**< nonzero: end 0.02 s after the last contact force */
   int32_t passes_per_step;    /**< master/slave passes per step (0: the default, 2) */
+  /* appended 2026-11-28 (the three below): a struct_size that ends before them means the defaults */
+  int32_t search_direction;       /**< a dm_search_direction */
+  int32_t stop_rule;              /**< a dm_stop_rule */
+  double specified_direction[3];  /**< with DM_SEARCH_SPECIFIED: a nonzero vector in each slave body's axes
+                                       (normalized; with two deformable bodies warned specified_direction_shared);
+                                       otherwise all zero */
 } dm_world_desc;
 
 /** The ABI version this library was built with (DM_ABI_VERSION); compare it with the header's. */

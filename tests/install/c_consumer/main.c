@@ -25,7 +25,8 @@ int main(void) {
        {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, DM_MOTION_PLANAR},
       {sizeof(dm_body_desc), "wall", wall, 8, faces, 12, 0.0, {0, 0, 0}, 0.0, 0.0, 0.1, 0.0, 1, 1,
        {{2.76, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, DM_MOTION_DEFAULT}};
-  dm_world_desc desc = {sizeof(dm_world_desc), 0.0005, 0.3, 1, 2};
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3,
+                        .stop_at_separation = 1, .passes_per_step = 2};
   dm_world* w = NULL;
   double dv[3];
   if (dm_world_create(&desc, bodies, 2, &w) != DM_OK || dm_world_run(w) != DM_OK || dm_body_delta_v(w, 0, dv) != DM_OK) {

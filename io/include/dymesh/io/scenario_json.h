@@ -22,4 +22,10 @@ Scenario LoadScenario(const std::string& path);
 /// Parses scenario JSON text (`file` is used in messages and to resolve relative paths).
 Scenario ParseScenario(const std::string& json_text, const std::string& file);
 
+/// Warns (specified_direction_shared) of the specified search direction with two or more deformable
+/// bodies: one body-frame direction serves every body as slave, so where two bodies push back along
+/// different lines (side, oblique and rear impacts) one sinks into the other. A scenario file's parse
+/// and a world built from arrays both ask it.
+void WarnSharedSpecifiedDirection(Scenario* scenario);
+
 }  // namespace dymesh
