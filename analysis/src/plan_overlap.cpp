@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
+#include "dymesh/core/mesh.h"
 #include "dymesh/core/outline.h"
 #include "dymesh/core/simulation.h"
 #include "recorded_states.h"
@@ -73,7 +75,51 @@ double DepthAlong(const std::vector<Vec2>& a, const std::vector<Vec2>& b, const 
   return std::isfinite(exit) ? exit : 0.0;
 }
 
+// overlap of two convex outlines across the edge normals of `edges`: the least (<= 0: apart)
+double LeastOverlapAcross(const std::vector<Vec2>& edges, const std::vector<Vec2>& p, const std::vector<Vec2>& q) {
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const Vec2 e = edges[(i + 1) % edges.size()] - edges[i];
+    const Vec2 n = Vec2(e.y(), -e.x()).normalized();
+    double p_lo = INFINITY, p_hi = -INFINITY, q_lo = INFINITY, q_hi = -INFINITY;
+    for (const Vec2& v : p) p_lo = std::min(p_lo, v.dot(n)), p_hi = std::max(p_hi, v.dot(n));
+    for (const Vec2& v : q) q_lo = std::min(q_lo, v.dot(n)), q_hi = std::max(q_hi, v.dot(n));
+    least = std::min(least, std::min(p_hi - q_lo, q_hi - p_lo));
+  }
+  return least;
+}
+
+// earth z range of a body's rest bounds box posed at `rigid`
+std::pair<double, double> HeightRange(const MeshStats& rest, const RigidState& rigid) {
+  const Mat3 r = rigid.Rotation();
+  double lo = INFINITY, hi = -INFINITY;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p(corner & 1 ? rest.max.x() : rest.min.x(), corner & 2 ? rest.max.y() : rest.min.y(),
+                 corner & 4 ? rest.max.z() : rest.min.z());
+    const double z = (rigid.position + r * p).z();
+    lo = std::min(lo, z), hi = std::max(hi, z);
+  }
+  return {lo, hi};
+}
+
 }  // namespace
+
+double DeepestPlanInterpenetration(const Simulation& sim, int a, int b, double least_height) {
+  const BodyModel &ma = sim.engine().model(a), &mb = sim.engine().model(b);
+  const std::vector<Vec3> va = OutlineVertices(ma), vb = OutlineVertices(mb);
+  const MeshStats sa = ComputeStats(ma.mesh), sb = ComputeStats(mb.mesh);
+  double deepest = 0.0;
+  for (const Sample* state : EvenlySpacedStates(sim, 0)) {
+    const RigidState &ra = state->bodies[a].rigid, &rb = state->bodies[b].rigid;
+    const auto [a_lo, a_hi] = HeightRange(sa, ra);
+    const auto [b_lo, b_hi] = HeightRange(sb, rb);
+    if (std::min(a_hi - b_lo, b_hi - a_lo) < least_height) continue;
+    const std::vector<Vec2> pa = PlanOutline(va, ra), pb = PlanOutline(vb, rb);
+    if (pa.size() < 3 || pb.size() < 3) continue;
+    deepest = std::max(deepest, std::min(LeastOverlapAcross(pa, pa, pb), LeastOverlapAcross(pb, pa, pb)));
+  }
+  return deepest;
+}
 
 double DeepestPlanOverlap(const Simulation& sim, int a, int b, const Vec3& direction) {
   const Vec2 n = Vec2(direction.x(), direction.y());

@@ -1,8 +1,10 @@
 #include "dymesh/analysis/run_assessment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dymesh/analysis/crush_reach.h"
@@ -196,13 +198,42 @@ RunStatus StatusOf(const Simulation& sim, const Summary& summary) {
   return RunStatus::kComplete;
 }
 
+// the pairs that can carry a load (not two rigid bodies) and carried none
+std::vector<std::pair<int, int>> PairsWithoutContact(const Simulation& sim) {
+  std::vector<std::pair<int, int>> pairs;
+  const int n = sim.engine().body_count();
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      if (sim.engine().model(a).rigid && sim.engine().model(b).rigid) continue;
+      const bool touched = std::any_of(sim.pair_contacts().begin(), sim.pair_contacts().end(),
+                                       [&](const PairContact& c) { return c.a == a && c.b == b; });
+      if (!touched) pairs.emplace_back(a, b);
+    }
+  return pairs;
+}
+
 // warnings on how the run went (after the scenario's own)
 void AddRunWarnings(const Simulation& sim, const Summary& s, RunStatus status, std::vector<RunWarning>* w) {
   const Scenario& sc = sim.scenario();
   if (status == RunStatus::kFailedNumerics)
     w->push_back({"non_finite", "", Text("a pose or velocity went non-finite at t = %.4f s; the results stop at the "
                                          "last finite step and are not usable", s.end_time)});
-  if (s.contact_start < 0.0)
+  // pairs that carried no force yet went into each other past the search's reach, in plan and in
+  // height: the search never found the other's surface (a specified direction pointing away from
+  // it), they passed through
+  bool unseen = false;
+  for (const auto& [a, b] : PairsWithoutContact(sim)) {
+    const double depth = DeepestPlanInterpenetration(sim, a, b, sc.contact.toofar_maximum);
+    if (!(depth > sc.contact.toofar_maximum)) continue;
+    unseen = true;
+    w->push_back({"passed_through", "",
+                  Text("\"%s\" and \"%s\" went %.3g m into each other (their outlines in plan) with no contact "
+                       "force: the contact search never found the other's surface (check contact.search_direction "
+                       "and specified_direction); they passed through each other, and delta-V, crush and energies "
+                       "are not physical",
+                       s.bodies[a].name.c_str(), s.bodies[b].name.c_str(), depth)});
+  }
+  if (s.contact_start < 0.0 && !unseen)
     w->push_back({"no_contact", "", "the bodies never touched: check the initial positions, headings and speeds"});
   if (sim.finished() && !sim.failed_numerics() && sc.stop_at_separation && !sim.separated() && s.contact_start >= 0.0)
     w->push_back({"ran_to_duration", "time.duration",

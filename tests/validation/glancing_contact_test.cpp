@@ -1,6 +1,7 @@
-// A glancing contact is not a pass-through: two boxes brushing corners at 30 deg slide past each other,
-// so along their sideways impulse they still close as they part; boxes that went through each other
-// between their nodes are still marked passed_through.
+// What passed_through marks: a glancing contact is not a pass-through (two boxes brushing corners at
+// 30 deg slide past each other, so along their sideways impulse they still close as they part); boxes
+// that went through each other between their nodes are, and so are bodies whose contact search never
+// found each other (no force at all).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -119,6 +120,35 @@ TEST(GlancingContact, BoxesGoneThroughEachOtherWithTheirCornersOverlappingAreMar
                 label.c_str(), o.summary.pairs[0].restitution(), o.went_in / u::kInch,
                 (o.summary.bodies[0].max_dynamic_crush + o.summary.bodies[1].max_dynamic_crush) / u::kInch);
   }
+}
+
+// the barrier box at 30 mph with the specified search direction: along the box's -x (its front pushed
+// back) it stops as the velocity search does, at (1 + e) v; along its y the nodes never look ahead, so
+// the box runs 2.8 m into the wall with no force. Before, that read "no_contact: the bodies never
+// touched", not voiding: a sample kept at delta-V 0
+TEST(GlancingContact, BodiesWhoseSearchNeverFoundEachOtherPassedThrough) {
+  auto run = [](const Vec3& direction) {
+    Scenario s = testing::BarrierScenario(30.0, 0.1, 0.0005);
+    s.contact.search_direction = SearchDirection::kSpecified;
+    s.contact.specified_direction = direction;
+    return Simulate(s);
+  };
+  const Outcome back = run(Vec3(-1, 0, 0));
+  EXPECT_NEAR(back.summary.bodies[0].delta_v, 1.1 * 30.0 * u::kMph, 0.01 * 1.1 * 30.0 * u::kMph);
+  EXPECT_FALSE(back.Warned("passed_through"));
+  const Outcome sideways = run(Vec3(0, 1, 0));
+  EXPECT_EQ(sideways.summary.bodies[0].delta_v, 0.0);
+  EXPECT_TRUE(sideways.Warned("passed_through"));
+  EXPECT_FALSE(sideways.Warned("no_contact"));
+  EXPECT_TRUE(WarningVoidsResults("passed_through"));
+  // a wall beside the box's path, never met: no_contact, not passed_through
+  Scenario beside = testing::BarrierScenario(30.0, 0.1, 0.0005);
+  beside.bodies[1].initial.position.y() = 300.0 * u::kInch;
+  const Outcome missed = Simulate(beside);
+  EXPECT_TRUE(missed.Warned("no_contact"));
+  EXPECT_FALSE(missed.Warned("passed_through"));
+  std::printf("[measured] specified -x: delta-V %.3f mph (closed form %.3f); along y: %.3f mph\n",
+              back.summary.bodies[0].delta_v / u::kMph, 1.1 * 30.0, sideways.summary.bodies[0].delta_v / u::kMph);
 }
 
 }  // namespace

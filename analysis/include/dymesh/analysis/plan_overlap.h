@@ -20,4 +20,12 @@ class Simulation;
 /// 26 in but along their impulse by their lengths.
 double DeepestPlanOverlap(const Simulation& sim, int a, int b, const Vec3& direction);
 
+/// [m] How far bodies `a` and `b` went into each other over the whole run, whether or not they
+/// touched: the least translation that parts their rest plan outlines (as above), the largest over the
+/// recorded states (at most 256, evenly spaced, and the last) at which their posed bounds overlap in
+/// height by `least_height` [m] or more (a car standing on a road body overlaps it in plan only); 0 when
+/// they never did. A pair that carried no contact force yet went into each other far passed through
+/// unseen (a specified search direction that never looks into the other body).
+double DeepestPlanInterpenetration(const Simulation& sim, int a, int b, double least_height);
+
 }  // namespace dymesh
