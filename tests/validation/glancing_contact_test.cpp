@@ -85,6 +85,23 @@ TEST(GlancingContact, BoxesBrushingPastEachOtherAreNotPassingThrough) {
   }
 }
 
+// the 180 in brush across the step, the searches, the stop rule, passes, box a meshed 1:4, the bodies
+// listed the other way round and the frame turned: never voided, and never farther into each other
+// along the impulse than the two crushed (the rule's own bar, search reach added, is not needed)
+TEST(GlancingContact, TheBrushIsNotVoidedAcrossStepSearchPassesMeshOrderAndFrame) {
+  for (const testing::ScenarioVariant& variant : testing::ContactVariantsWithMeshAndOrder("a meshed 1:4", "b first")) {
+    Scenario s = Brush(-180.0, {18, 11, 5});
+    variant.second(&s);
+    const Outcome o = Simulate(s);
+    ASSERT_EQ(o.summary.pairs.size(), 1u) << variant.first;
+    const double crushed = o.summary.bodies[0].max_dynamic_crush + o.summary.bodies[1].max_dynamic_crush;
+    EXPECT_FALSE(o.Warned("passed_through")) << variant.first;
+    EXPECT_LT(o.went_in, crushed) << variant.first;
+    std::printf("[measured] brush 180 in over, %s: restitution along the impulse %.3f, went in %.1f in for %.1f in\n",
+                variant.first.c_str(), o.summary.pairs[0].restitution(), o.went_in / u::kInch, crushed / u::kInch);
+  }
+}
+
 // the same brush with boxes of one cell along their length (180 in faces): a's corner goes in between
 // b's nodes and on through it. Marked, by both signs
 TEST(GlancingContact, TheSameBrushWithCoarseBoxesGoesThroughAndIsMarked) {
