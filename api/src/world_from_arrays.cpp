@@ -252,7 +252,7 @@ ArrayWorld WorldFromArrays(const dm_world_desc* world, const dm_body_desc* bodie
     any_deformable = any_deformable || !spec.rigid;
   }
   Require(any_deformable, "bodies: every body is rigid: at least one must be deformable");
-  WarnSharedSpecifiedDirection(&out.scenario);
+  WarnOfTheSpecifiedDirection(&out.scenario);
   return out;
 }
 

@@ -482,6 +482,29 @@ TEST_F(ScenarioFiles, WarnsOfAVehicleStiffnessOnABodyMadeRigid) {
   ExpectRefused(Good().dump(), Abs("vehicles/sedan.json"), "stiffness");
 }
 
+// a specified direction that does not push a deformable body's nodes back against its approach to
+// another body is warned: its nodes look past that body (the barrier box searching along its y ran
+// 2.8 m into the wall with no force). The car drives +x at a fixed wall ahead: pushback -x (its frame,
+// heading 0) serves; +x, or y, or z does not; a wall behind it (receding) is not judged
+TEST_F(ScenarioFiles, WarnsOfASpecifiedDirectionThatDoesNotPushBackAgainstTheApproach) {
+  const auto warned = [&](const Json& j) {
+    const Scenario s = ParseScenario(j.dump(), ScenarioPath());
+    return std::count_if(s.warnings.begin(), s.warnings.end(),
+                         [](const RunWarning& w) { return w.code == "specified_direction_away"; });
+  };
+  Json j = Good();
+  j["bodies"].erase(1);  // the car and the wall
+  j["bodies"][0]["initial"] = {{"position", {0, 0, -20}}, {"heading", 0}, {"speed", 30}};
+  for (const auto& [direction, expected] : std::vector<std::pair<Json, int>>{
+           {{-1, 0, 0}, 0}, {{-1, 0.5, 0}, 0}, {{1, 0, 0}, 1}, {{0, 1, 0}, 1}, {{0, 0, 1}, 1}}) {
+    j["contact"]["specified_direction"] = direction;
+    EXPECT_EQ(warned(j), expected) << direction.dump();
+  }
+  j["contact"]["specified_direction"] = {1, 0, 0};
+  j["bodies"][1]["initial"]["position"] = {-300, 0, -50};  // the wall behind the car
+  EXPECT_EQ(warned(j), 0);
+}
+
 // the specified search direction between two deformable bodies is warned: one body-frame direction
 // serves both as slaves, and where they push back along different lines one sinks into the other (a
 // sweep of options, 2026-11-28: the side demo 19 in past the struck car's crush, unmarked). The good

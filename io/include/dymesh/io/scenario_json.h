@@ -22,10 +22,11 @@ Scenario LoadScenario(const std::string& path);
 /// Parses scenario JSON text (`file` is used in messages and to resolve relative paths).
 Scenario ParseScenario(const std::string& json_text, const std::string& file);
 
-/// Warns (specified_direction_shared) of the specified search direction with two or more deformable
-/// bodies: one body-frame direction serves every body as slave, so where two bodies push back along
-/// different lines (side, oblique and rear impacts) one sinks into the other. A scenario file's parse
-/// and a world built from arrays both ask it.
-void WarnSharedSpecifiedDirection(Scenario* scenario);
+/// Warns of the specified search direction where it cannot serve: with two or more deformable bodies
+/// (specified_direction_shared: one body-frame direction serves every body as slave, so where two
+/// bodies push back along different lines one sinks into the other), and for a deformable body it does
+/// not push back against its initial approach to another body (specified_direction_away: its nodes
+/// look past it). A scenario file's parse and a world built from arrays both ask it.
+void WarnOfTheSpecifiedDirection(Scenario* scenario);
 
 }  // namespace dymesh
