@@ -847,10 +847,11 @@ void WarnOfTheSpecifiedDirection(Scenario* s) {
     if (s->bodies[i].rigid) continue;
     const Vec3 pushback = s->bodies[i].initial.Rotation() * s->contact.specified_direction;
     for (std::size_t j = 0; j < s->bodies.size(); ++j) {
-      // closing on j (their CGs drawing together), with nodes not pushed back against that motion
+      // closing on j (their CGs drawing together), with nodes not pushed back against that motion (at
+      // 90 deg or more from it; 1e-9 of slack, so a square angle reads the same in any frame)
       const Vec3 approach = s->bodies[i].initial.velocity - s->bodies[j].initial.velocity;
       const Vec3 toward = s->bodies[j].initial.position - s->bodies[i].initial.position;
-      if (j == i || !(approach.dot(toward) > 0.0) || pushback.dot(approach) < 0.0) continue;
+      if (j == i || !(approach.dot(toward) > 0.0) || pushback.dot(approach) < -1e-9 * approach.norm()) continue;
       s->warnings.push_back(
           {"specified_direction_away", "contact.specified_direction",
            "\"" + s->bodies[i].name + "\" approaches \"" + s->bodies[j].name + "\", but specified_direction (its " +

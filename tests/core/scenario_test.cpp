@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -500,7 +501,14 @@ TEST_F(ScenarioFiles, WarnsOfASpecifiedDirectionThatDoesNotPushBackAgainstTheApp
     j["contact"]["specified_direction"] = direction;
     EXPECT_EQ(warned(j), expected) << direction.dump();
   }
+  // square to the approach in a turned frame (round-off either side of 90 deg): warned as in the plain one
+  j["contact"]["specified_direction"] = {0, 1, 0};
+  j["bodies"][0]["initial"] = {{"position", {0, 0, -20}}, {"heading", 30}, {"speed", 30}};
+  const double turn = std::acos(-1.0) / 6;  // 30 deg
+  j["bodies"][1]["initial"]["position"] = {300 * std::cos(turn), 300 * std::sin(turn), -50};
+  EXPECT_EQ(warned(j), 1);
   j["contact"]["specified_direction"] = {1, 0, 0};
+  j["bodies"][0]["initial"]["heading"] = 0;
   j["bodies"][1]["initial"]["position"] = {-300, 0, -50};  // the wall behind the car
   EXPECT_EQ(warned(j), 0);
 }
