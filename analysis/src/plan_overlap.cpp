@@ -90,12 +90,12 @@ double LeastOverlapAcross(const std::vector<Vec2>& edges, const std::vector<Vec2
 }
 
 // earth z range of a body's rest bounds box posed at `rigid`
-std::pair<double, double> HeightRange(const MeshStats& rest, const RigidState& rigid) {
+std::pair<double, double> HeightRange(const PointBounds& rest, const RigidState& rigid) {
   const Mat3 r = rigid.Rotation();
   double lo = INFINITY, hi = -INFINITY;
   for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 p(corner & 1 ? rest.max.x() : rest.min.x(), corner & 2 ? rest.max.y() : rest.min.y(),
-                 corner & 4 ? rest.max.z() : rest.min.z());
+    const Vec3 p(corner & 1 ? rest.hi.x() : rest.lo.x(), corner & 2 ? rest.hi.y() : rest.lo.y(),
+                 corner & 4 ? rest.hi.z() : rest.lo.z());
     const double z = (rigid.position + r * p).z();
     lo = std::min(lo, z), hi = std::max(hi, z);
   }
@@ -107,7 +107,7 @@ std::pair<double, double> HeightRange(const MeshStats& rest, const RigidState& r
 double DeepestPlanInterpenetration(const Simulation& sim, int a, int b, double least_height) {
   const BodyModel &ma = sim.engine().model(a), &mb = sim.engine().model(b);
   const std::vector<Vec3> va = OutlineVertices(ma), vb = OutlineVertices(mb);
-  const MeshStats sa = ComputeStats(ma.mesh), sb = ComputeStats(mb.mesh);
+  const PointBounds sa = BoundsOf(ma.mesh.vertices), sb = BoundsOf(mb.mesh.vertices);
   double deepest = 0.0;
   for (const Sample* state : EvenlySpacedStates(sim, 0)) {
     const RigidState &ra = state->bodies[a].rigid, &rb = state->bodies[b].rigid;

@@ -204,10 +204,8 @@ std::vector<std::pair<int, int>> PairsWithoutContact(const Simulation& sim) {
   const int n = sim.engine().body_count();
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b) {
-      if (sim.engine().model(a).rigid && sim.engine().model(b).rigid) continue;
-      const bool touched = std::any_of(sim.pair_contacts().begin(), sim.pair_contacts().end(),
-                                       [&](const PairContact& c) { return c.a == a && c.b == b; });
-      if (!touched) pairs.emplace_back(a, b);
+      if (!(sim.engine().model(a).rigid && sim.engine().model(b).rigid) && !sim.PairTouched(a, b))
+        pairs.emplace_back(a, b);
     }
   return pairs;
 }

@@ -194,13 +194,12 @@ void ReadSearch(const dm_world_desc& d, ContactOptions* o) {
   o->stop_rule = rules[d.stop_rule];
   const Vec3 v(d.specified_direction[0], d.specified_direction[1], d.specified_direction[2]);
   Require(v.allFinite(), "world.specified_direction: expected finite components");
-  const double largest = v.cwiseAbs().maxCoeff();
   if (o->search_direction != SearchDirection::kSpecified) {
-    Require(largest == 0.0, "world.specified_direction: acts only with DM_SEARCH_SPECIFIED; leave it zero");
+    Require(v.isZero(0.0), "world.specified_direction: acts only with DM_SEARCH_SPECIFIED; leave it zero");
     return;
   }
-  Require(largest > 0.0, "world.specified_direction: expected a vector of nonzero length with DM_SEARCH_SPECIFIED");
-  o->specified_direction = (v / largest).normalized();  // scaled first: tiny or huge components stay exact
+  o->specified_direction = UnitAlong(v);
+  Require(!o->specified_direction.isZero(), "world.specified_direction: expected a vector of nonzero length with DM_SEARCH_SPECIFIED");
 }
 
 // the scenario part of a world description

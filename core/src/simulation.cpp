@@ -98,9 +98,7 @@ double Simulation::SoonestPairMeeting(const std::vector<PlanMotion>& plans, doub
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b) {
       if (engine_->model(a).rigid && engine_->model(b).rigid) continue;
-      const bool touched = std::any_of(pair_contacts_.begin(), pair_contacts_.end(),
-                                       [&](const PairContact& c) { return c.a == a && c.b == b; });
-      soonest = std::min(soonest, dymesh::SoonestMeeting(plans[a], plans[b], touched ? touched_horizon : remaining,
+      soonest = std::min(soonest, dymesh::SoonestMeeting(plans[a], plans[b], PairTouched(a, b) ? touched_horizon : remaining,
                                                           scenario_.contact.toofar_margin));
     }
   return soonest;

@@ -86,7 +86,7 @@ void SetReachStep(const Scenario& scenario, const std::vector<std::shared_ptr<co
 }
 
 // the `gravity` bodies' ground support: x'' = -omega^2 x - 2 omega x' (critically damped) stepped as
-// the host does (v += h a, then x += h v) maps (v, x) by a matrix of trace 2 - 2 omega h - (omega h)^2 and
+// the host does (spec §8, semi-implicit Euler: v += h a, then x += h v) maps (v, x) by a matrix of trace 2 - 2 omega h - (omega h)^2 and
 // determinant 1 - 2 omega h; both roots stay inside the unit circle (Jury: |det| < 1, 1 + det > |trace|)
 // while omega h < 2 (sqrt 2 - 1) = 0.83
 void SetGroundLimits(const Scenario& scenario, TimeStepGuide* guide) {

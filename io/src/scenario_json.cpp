@@ -370,10 +370,8 @@ void ParseContact(const Source& src, const Json& j, const std::string& path, Con
   if (const Json* v = Find(j, "specified_direction")) {
     const std::string field = Join(path, "specified_direction");
     const Vec3 d = ReadVec3(src, *v, field, kAnyFinite);
-    // scaled by its largest component first: 1e200 or 1e-200 components neither overflow nor vanish
-    const double largest = d.cwiseAbs().maxCoeff();
-    if (!(largest > 0.0)) Fail(src, field, "expected a vector of nonzero length, got " + FormatDouble(d.x()) + ", " + FormatDouble(d.y()) + ", " + FormatDouble(d.z()));
-    o->specified_direction = (d / largest).normalized();
+    o->specified_direction = UnitAlong(d);
+    if (o->specified_direction.isZero()) Fail(src, field, "expected a vector of nonzero length, got " + FormatDouble(d.x()) + ", " + FormatDouble(d.y()) + ", " + FormatDouble(d.z()));
   }
   // lengths (>= 0; the search depths > 0)
   const std::pair<const char*, double*> lengths[] = {

@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <array>
 
 #include <Eigen/Core>
@@ -16,6 +17,13 @@ inline Vec3 TriangleCross(const Vec3& a, const Vec3& b, const Vec3& c) { return 
 
 /// The part of `v` along a surface of unit normal `n` (v less its normal component).
 inline Vec3 AlongSurface(const Vec3& v, const Vec3& n) { return v - v.dot(n) * n; }
+
+/// The unit vector along v, scaled by its largest component first so that components of 1e200 or
+/// 1e-200 neither overflow nor vanish; the zero vector for a zero (or non-finite) v.
+inline Vec3 UnitAlong(const Vec3& v) {
+  const double largest = v.cwiseAbs().maxCoeff();
+  return largest > 0.0 && std::isfinite(largest) ? Vec3((v / largest).normalized()) : Vec3::Zero();
+}
 
 /// InsidePolygonTest_CrossProd (spec §2): q lies inside triangle abc (normal n) when it is on the
 /// inner side of all three edges; points on an edge or vertex count as inside (relative tolerance

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -141,6 +142,11 @@ class Simulation {
   double last_contact_time() const { return last_contact_time_; }
   /// Every pair that carried a collision load, in the order their contact began.
   const std::vector<PairContact>& pair_contacts() const { return pair_contacts_; }
+  /// Whether bodies a < b carried a collision load between them at some step.
+  bool PairTouched(int a, int b) const {
+    return std::any_of(pair_contacts_.begin(), pair_contacts_.end(),
+                       [&](const PairContact& c) { return c.a == a && c.b == b; });
+  }
   /// [J] work of the motion model's own loads on a body so far (a `gravity` body's weight and ground
   /// support; 0 for the others and in force-provider mode, where the host applies its own), booked as
   /// the contact work is: force times the step's mean velocity
