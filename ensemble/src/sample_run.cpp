@@ -32,7 +32,8 @@ Json BodyJson(const BodySummary& b, const RigidState& final_state, const OutputU
           {"final_position", Vector(final_state.position, u.length)},
           {"final_heading_deg", final_state.yaw * kRadToDeg}, {"final_velocity", Vector(final_state.velocity, u.speed)},
           {"final_yaw_rate_deg_s", b.final_yaw_rate * kRadToDeg},
-          {"peak_contact_area", b.peak_contact_area * u.length * u.length}};
+          {"peak_contact_area", b.peak_contact_area * u.length * u.length},
+          {"support_work", b.support_work * u.energy}};
 }
 
 // the fields every record has, whatever became of the sample
@@ -51,6 +52,7 @@ void RecordRun(const Simulation& sim, const Scenario& scenario, Json* record) {
   (*record)["status"] = RunStatusName(s.status);
   (*record)["warnings"] = warnings;
   (*record)["energy_balance_error"] = std::isfinite(s.energy_balance_error) ? s.energy_balance_error : 0.0;
+  (*record)["support_work"] = s.support_work * u.energy;
   for (std::size_t i = 0; i < s.bodies.size(); ++i)
     (*record)["bodies"].push_back(BodyJson(s.bodies[i], sim.engine().state(static_cast<int>(i)).rigid, u));
 }
