@@ -6,10 +6,12 @@
 #include <pybind11/stl.h>
 #include <tbb/global_control.h>
 
+#include <climits>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "dymesh/accel/embree_locator.h"
@@ -32,6 +34,9 @@ using dymesh::Vec3;
 constexpr int kStateColumns = 12;
 // a loads row: force (body), moment (body), force (earth)
 constexpr int kLoadColumns = 9;
+// the deepest nesting a scenario dict may have (a scenario file's is 6 or so; deeper values crashed
+// the checks that walk it)
+constexpr int kMaxNesting = 200;
 
 std::unique_ptr<tbb::global_control> thread_limit;
 
@@ -109,8 +114,36 @@ class Run {
     return out;
   }
 
+  // ends a host-driven run, refused before its first host step (it read "complete" with 0 steps)
+  void HostFinish(const py::array_t<double, py::array::c_style | py::array::forcecast>& states) {
+    dymesh::Simulation& s = sim();
+    if (!s.finished() && s.steps() == 0)
+      throw std::logic_error("no host step taken: a host-driven run ends after its first host_step");
+    s.FinishHostRun(ToStates(states));
+  }
+
+  // writes the outputs into `dir`, the summary's text made first: a run it cannot describe writes
+  // nothing (WriteOutputs makes it last, after the meshes)
+  void WriteOutputs(const std::string& dir) const {
+    const dymesh::Simulation& s = sim();
+    const dymesh::Summary summary = dymesh::Summarize(s);
+    dymesh::SummaryJson(summary, s.scenario(), dymesh::OutputFileNames(s.scenario()));
+    dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(s.scenario()), dymesh::InputFiles(s.scenario()), "dir");
+    folder.ReplacePreviousRun();
+    dymesh::WriteOutputs(s, summary, dir);
+  }
+
   // force-provider step: loads (n, 9) for the coming step
-  py::array_t<double> HostStep(const py::array_t<double, py::array::c_style | py::array::forcecast>& states, double dt) {
+  py::array_t<double> HostStep(const py::array_t<double, py::array::c_style | py::array::forcecast>& states,
+                               const py::object& dt_seconds) {
+    // a number, not a bool (True was taken as a step of 1 s)
+    const bool is_bool = PyBool_Check(dt_seconds.ptr()) || py::isinstance(dt_seconds, py::module_::import("numpy").attr("bool_"));
+    if (is_bool || !PyNumber_Check(dt_seconds.ptr()) || py::isinstance<py::str>(dt_seconds))
+      throw py::type_error("dt: expected a number of seconds, got " +
+                           (is_bool ? std::string("bool") : std::string(Py_TYPE(dt_seconds.ptr())->tp_name)) + " (" +
+                           py::repr(dt_seconds).cast<std::string>() + ")");
+    const double dt = PyFloat_AsDouble(dt_seconds.ptr());
+    if (PyErr_Occurred()) throw py::error_already_set();
     const std::vector<RigidState> at = ToStates(states);
     dymesh::StepResult step;
     Stepping([&](dymesh::Simulation& sim) { step = sim.HostStep(at, dt); }, [](const dymesh::Simulation&) { return false; });
@@ -151,25 +184,63 @@ struct Body {
   const dymesh::Simulation& sim() const { return run.cast<const Run&>().sim(); }
 };
 
-// a Python str may hold a NUL, which a file name cannot: the path would be cut short at it
-void RefuseNul(const std::string& path, const char* argument) {
-  if (path.find('\0') != std::string::npos)
+// a path argument: str, bytes or os.PathLike, as the system is given it (os.fsencode: a str's
+// undecodable bytes kept), refused when it holds a NUL (the path would be cut short at it)
+std::string PathArgument(const py::object& path, const char* argument) {
+  const py::module_ os = py::module_::import("os");
+  if (!py::isinstance<py::str>(path) && !py::isinstance<py::bytes>(path) && !py::isinstance(path, os.attr("PathLike")))
+    throw py::type_error(std::string(argument) + ": expected str, bytes or os.PathLike, got " + Py_TYPE(path.ptr())->tp_name);
+  const std::string bytes = os.attr("fsencode")(path).cast<py::bytes>();
+  if (bytes.find('\0') != std::string::npos)
     throw std::invalid_argument(std::string(argument) + ": a file name cannot hold a NUL character");
+  return bytes;
 }
 
-// a non-finite float in a scenario dict, named by its path (json.dumps writes it as NaN or
-// Infinity, which the JSON reader refuses only by byte offset)
-void RefuseNonFinite(const py::handle& value, const std::string& path, const std::string& file) {
-  if (py::isinstance<py::float_>(value) && !std::isfinite(value.cast<double>()))
-    throw dymesh::InputError(file, path, "expected a finite number, got " + py::str(value).cast<std::string>());
-  if (py::isinstance<py::dict>(value))
-    for (const auto& item : value.cast<py::dict>())
-      RefuseNonFinite(item.second, (path.empty() ? "" : path + ".") + py::str(item.first).cast<std::string>(), file);
-  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-    std::size_t i = 0;
-    for (const auto& item : value) RefuseNonFinite(item, path + "[" + std::to_string(i++) + "]", file);
+// a scenario dict checked before json.dumps turns it into text, each refusal naming the path: a
+// non-finite float (written as NaN or Infinity, which the JSON reader refuses only by byte offset), a
+// str that is not UTF-8 (a lone surrogate: likewise), a container holding itself or nested past
+// kMaxNesting (the walk recursed without end: a crash, a sweep 2026-11-28)
+class ScenarioTree {
+ public:
+  explicit ScenarioTree(std::string file) : file_(std::move(file)) {}
+
+  void Check(const py::handle& value, const std::string& path, int depth) {
+    const std::string at = path.empty() ? "(root)" : path;
+    if (py::isinstance<py::float_>(value) && !std::isfinite(value.cast<double>()))
+      throw dymesh::InputError(file_, at, "expected a finite number, got " + py::repr(value).cast<std::string>());
+    if (py::isinstance<py::str>(value)) {
+      Py_ssize_t size = 0;
+      if (PyUnicode_AsUTF8AndSize(value.ptr(), &size) == nullptr) {
+        PyErr_Clear();
+        throw dymesh::InputError(file_, at, "expected UTF-8 text, got a str holding a lone surrogate");
+      }
+      return;
+    }
+    const bool dict = py::isinstance<py::dict>(value);
+    if (!dict && !py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value)) return;
+    // a container: once (one held in two places is checked where first met), not inside itself,
+    // not too deep
+    if (checked_.count(value.ptr())) return;
+    if (open_.count(value.ptr()))
+      throw dymesh::InputError(file_, at, "refers back to a value that holds it (a cycle): expected JSON data, a tree");
+    if (depth > kMaxNesting)
+      throw dymesh::InputError(file_, at, "expected values nested at most " + std::to_string(kMaxNesting) + " deep");
+    open_.insert(value.ptr());
+    if (dict) {
+      for (const auto& item : value.cast<py::dict>())
+        Check(item.second, (path.empty() ? "" : path + ".") + py::str(item.first).cast<std::string>(), depth + 1);
+    } else {
+      std::size_t i = 0;
+      for (const auto& item : value) Check(item, path + "[" + std::to_string(i++) + "]", depth + 1);
+    }
+    open_.erase(value.ptr());
+    checked_.insert(value.ptr());
   }
-}
+
+ private:
+  std::string file_;
+  std::unordered_set<PyObject*> open_, checked_;  // containers being walked, and walked (the caller's dict holds them)
+};
 
 int CheckedIndex(const Run& run, int index) {
   const int n = run.sim().engine().body_count();
@@ -201,8 +272,18 @@ PYBIND11_MODULE(dymesh, m) {
     }
   });
 
-  m.def("set_threads", [](int threads) {
-    if (threads < 0 || threads > 4096) throw std::invalid_argument("threads: expected 0 (all cores) .. 4096");
+  m.def("set_threads", [](const py::object& count) {
+    // an int of any size (2**40 was pybind11's TypeError), not a bool or a float
+    if (PyBool_Check(count.ptr()) || !PyIndex_Check(count.ptr()))
+      throw py::type_error(std::string("threads: expected an int, got ") + Py_TYPE(count.ptr())->tp_name);
+    PyObject* index = PyNumber_Index(count.ptr());
+    if (index == nullptr) throw py::error_already_set();
+    const py::int_ value = py::reinterpret_steal<py::int_>(index);
+    int overflow = 0;
+    const long long wanted = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+    if (overflow != 0 || wanted < 0 || wanted > 4096)
+      throw std::invalid_argument("threads: expected 0 (all cores) .. 4096, got " + py::repr(value).cast<std::string>());
+    const int threads = static_cast<int>(wanted);
     thread_limit.reset();
     if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   }, py::arg("threads"), "Limits the worker threads (0: all cores); results do not depend on it.");
@@ -268,33 +349,37 @@ PYBIND11_MODULE(dymesh, m) {
       .def("host_step", &Run::HostStep, py::arg("states"), py::arg("dt"),
            "Force-provider step: every body's state now (n, 12); returns the loads (n, 9) for the coming step: "
            "force (body), moment (body), force (earth).")
-      .def("host_finish", [](Run& r, const py::array_t<double, py::array::c_style | py::array::forcecast>& states) {
-        r.sim().FinishHostRun(r.ToStates(states));
-      }, py::arg("states"), "Ends a host-driven run with the states reached after the last step.")
-      .def("write_outputs", [](const Run& r, const std::string& dir) {
-        RefuseNul(dir, "dir");
-        dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(r.sim().scenario()), dymesh::InputFiles(r.sim().scenario()),
-                                    "dir");
-        folder.ReplacePreviousRun();
-        dymesh::WriteOutputs(r.sim(), dymesh::Summarize(r.sim()), dir);
-      }, py::arg("dir"), "Writes meshes, history.csv, report.html and summary.json into `dir`.");
+      .def("host_finish", &Run::HostFinish, py::arg("states"),
+           "Ends a host-driven run with the states reached after the last step. StateError before the first "
+           "host_step.")
+      .def("write_outputs", [](const Run& r, const py::object& dir) { r.WriteOutputs(PathArgument(dir, "dir")); },
+           py::arg("dir"), "Writes meshes, history.csv, report.html and summary.json into `dir` (str or os.PathLike).");
 
-  m.def("load_scenario", [](const std::string& path) {
-          RefuseNul(path, "path");
-          return std::make_unique<Run>(dymesh::LoadScenario(path));
+  m.def("load_scenario", [](const py::object& path) {
+          return std::make_unique<Run>(dymesh::LoadScenario(PathArgument(path, "path")));
         },
-        py::arg("path"), "Loads and validates a scenario file and its meshes; returns a Run.");
-  m.def("scenario", [](const py::object& scenario, const std::string& base_dir) {
+        py::arg("path"), "Loads and validates a scenario file (str or os.PathLike) and its meshes; returns a Run.");
+  m.def("scenario", [](const py::object& scenario, const py::object& base_dir) {
           // a dict is the scenario file's JSON; a str its text. Relative mesh and vehicle paths resolve
           // against base_dir; errors name the field as for a file
-          const std::string file = base_dir + "/(python scenario)";
-          if (!py::isinstance<py::str>(scenario)) RefuseNonFinite(scenario, "", file);
-          const std::string text = py::isinstance<py::str>(scenario)
-                                       ? scenario.cast<std::string>()
-                                       : py::module_::import("json").attr("dumps")(scenario).cast<std::string>();
+          const std::string file = PathArgument(base_dir, "base_dir") + "/(python scenario)";
+          if (!py::isinstance<py::str>(scenario)) ScenarioTree(file).Check(scenario, "", 0);
+          std::string text;
+          if (py::isinstance<py::str>(scenario)) {
+            Py_ssize_t size = 0;
+            const char* utf8 = PyUnicode_AsUTF8AndSize(scenario.ptr(), &size);
+            if (utf8 == nullptr) {
+              PyErr_Clear();
+              throw dymesh::InputError(file, "(json)", "expected UTF-8 text, got a str holding a lone surrogate");
+            }
+            text.assign(utf8, static_cast<std::size_t>(size));
+          } else {
+            text = py::module_::import("json").attr("dumps")(scenario).cast<std::string>();
+          }
           return std::make_unique<Run>(dymesh::ParseScenario(text, file));
         },
         py::arg("scenario"), py::arg("base_dir") = ".",
         "Builds a Run from a scenario given as a dict (or JSON text), laid out as a scenario file: bodies, "
-        "meshes (files, boxes, cylinders), motion, contact options. Relative paths resolve against base_dir.");
+        "meshes (files, boxes, cylinders), motion, contact options. Relative paths resolve against base_dir "
+        "(str or os.PathLike).");
 }

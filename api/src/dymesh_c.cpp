@@ -4,6 +4,7 @@
 
 #include <tbb/global_control.h>
 
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -29,10 +30,13 @@
 struct dm_world {
   std::unique_ptr<dymesh::Simulation> sim;
   // views stay valid until the world changes: the summary handed out is made again only once the
-  // run has stepped or finished since
+  // run has stepped or finished since (under summary_mutex: calls that read may overlap)
   std::string summary_text;
   int summary_steps = -1;
   bool summary_finished = false;
+  mutable std::mutex summary_mutex;
+  // the calls in progress on this world (WorldAccess): -1 while one changes it, else how many read it
+  mutable std::atomic<int> users{0};
 };
 
 namespace {
@@ -77,6 +81,48 @@ dm_status Guarded(const char* function, F&& body) {
   }
 }
 
+// ---- one call at a time ---------------------------------------------------------------------------
+
+// a call refused because another thread's call on the same world is in progress (DM_ERROR_STATE)
+struct WorldBusy : std::logic_error {
+  WorldBusy()
+      : std::logic_error("another call on this world is in progress (in another thread): a world takes a call that "
+                         "steps or changes it only while no other call on it runs, and no call while one does "
+                         "(dymesh.h, \"Threads\")") {}
+};
+
+// the access a call has to its world for as long as it runs: a call that changes the world (steps,
+// host steps, ends the run, writes its outputs) alone, calls that only read it beside each other.
+// One that cannot have it at once is refused, never made to wait (a sweep, 2026-11-28: a step
+// beside a run corrupted the heap)
+class WorldAccess {
+ public:
+  enum Kind { kRead, kChange };
+  WorldAccess(const dm_world* w, Kind kind) : users_(UsersOf(w)), kind_(kind) {
+    int now = users_.load(std::memory_order_relaxed);
+    do {
+      if (now < 0 || (kind == kChange && now > 0)) throw WorldBusy();
+    } while (!users_.compare_exchange_weak(now, kind == kChange ? -1 : now + 1, std::memory_order_acquire,
+                                           std::memory_order_relaxed));
+  }
+  ~WorldAccess() {
+    if (kind_ == kChange)
+      users_.store(0, std::memory_order_release);
+    else
+      users_.fetch_sub(1, std::memory_order_release);
+  }
+  WorldAccess(const WorldAccess&) = delete;
+  WorldAccess& operator=(const WorldAccess&) = delete;
+
+ private:
+  static std::atomic<int>& UsersOf(const dm_world* w) {
+    NotNull(w, "world");
+    return w->users;
+  }
+  std::atomic<int>& users_;
+  Kind kind_;
+};
+
 // ---- argument checks --------------------------------------------------------------------------
 
 const dymesh::Simulation& Sim(const dm_world* w) {
@@ -105,8 +151,21 @@ std::vector<RigidState> States(const dm_world* w, const dm_body_state* states, i
   const int n = Sim(w).engine().body_count();
   Require(count == n, "expected " + std::to_string(n) + " body states, got " + std::to_string(count));
   std::vector<RigidState> out;
-  for (int i = 0; i < n; ++i) out.push_back(ToRigid(states[i], i));
+  for (int i = 0; i < n; ++i) out.push_back(ToRigid(states[i], "states[" + std::to_string(i) + "]"));
   return out;
+}
+
+// the summary text of the world as it is now, made again only when the run has stepped or finished
+// since it was last made (the view handed out stays valid until then)
+const std::string& SummaryText(dm_world* w) {
+  const dymesh::Simulation& sim = *w->sim;
+  std::lock_guard<std::mutex> lock(w->summary_mutex);
+  if (w->summary_steps != sim.steps() || w->summary_finished != sim.finished()) {
+    w->summary_text = dymesh::SummaryJson(dymesh::Summarize(sim), sim.scenario(), dymesh::OutputFileNames(sim.scenario()));
+    w->summary_steps = sim.steps();
+    w->summary_finished = sim.finished();
+  }
+  return w->summary_text;
 }
 
 dymesh::LocatorFactory Locators() {
@@ -158,14 +217,14 @@ dm_status dm_world_create(const dm_world_desc* desc, const dm_body_desc* bodies,
 
 dm_status dm_world_run(dm_world* w) {
   return Guarded("dm_world_run", [&] {
-    NotNull(w, "world");
+    const WorldAccess access(w, WorldAccess::kChange);
     w->sim->Run();
   });
 }
 
 dm_status dm_world_step(dm_world* w, int32_t* finished) {
   return Guarded("dm_world_step", [&] {
-    NotNull(w, "world");
+    const WorldAccess access(w, WorldAccess::kChange);
     NotNull(finished, "finished");
     *finished = w->sim->finished() ? 1 : 0;
     w->sim->Advance();
@@ -183,6 +242,7 @@ int32_t dm_world_body_count(const dm_world* w) {
 
 dm_status dm_world_time(const dm_world* w, double* out_seconds) {
   return Guarded("dm_world_time", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     NotNull(out_seconds, "out_seconds");
     *out_seconds = Sim(w).time();
   });
@@ -190,6 +250,7 @@ dm_status dm_world_time(const dm_world* w, double* out_seconds) {
 
 dm_status dm_world_run_status(const dm_world* w, dm_run_status* out) {
   return Guarded("dm_world_run_status", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     NotNull(out, "out");
     *out = static_cast<dm_run_status>(dymesh::Summarize(Sim(w)).status);
   });
@@ -197,6 +258,7 @@ dm_status dm_world_run_status(const dm_world* w, dm_run_status* out) {
 
 dm_status dm_body_name(const dm_world* w, int32_t body, const char** out) {
   return Guarded("dm_body_name", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     BodyIndex(w, body);
     NotNull(out, "out");
     *out = Sim(w).engine().model(body).name.c_str();
@@ -205,6 +267,7 @@ dm_status dm_body_name(const dm_world* w, int32_t body, const char** out) {
 
 dm_status dm_body_state_get(const dm_world* w, int32_t body, dm_body_state* out) {
   return Guarded("dm_body_state_get", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     BodyIndex(w, body);
     NotNull(out, "out");
     *out = FromRigid(Sim(w).engine().state(body).rigid);
@@ -213,6 +276,7 @@ dm_status dm_body_state_get(const dm_world* w, int32_t body, dm_body_state* out)
 
 dm_status dm_body_delta_v(const dm_world* w, int32_t body, double out_xyz[3]) {
   return Guarded("dm_body_delta_v", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     BodyIndex(w, body);
     NotNull(out_xyz, "out_xyz");
     const dymesh::Simulation& sim = Sim(w);
@@ -224,6 +288,7 @@ dm_status dm_body_delta_v(const dm_world* w, int32_t body, double out_xyz[3]) {
 
 dm_status dm_body_vertices(const dm_world* w, int32_t body, const double** out_xyz, int32_t* out_count) {
   return Guarded("dm_body_vertices", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     BodyIndex(w, body);
     NotNull(out_xyz, "out_xyz");
     NotNull(out_count, "out_count");
@@ -236,6 +301,7 @@ dm_status dm_body_vertices(const dm_world* w, int32_t body, const double** out_x
 
 dm_status dm_body_copy_vertices(const dm_world* w, int32_t body, double* xyz, int32_t capacity, int32_t* out_count) {
   return Guarded("dm_body_copy_vertices", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     BodyIndex(w, body);
     NotNull(out_count, "out_count");
     const std::vector<Vec3>& v = Sim(w).engine().state(body).vertices;
@@ -249,6 +315,7 @@ dm_status dm_body_copy_vertices(const dm_world* w, int32_t body, double* xyz, in
 
 dm_status dm_body_deformation(const dm_world* w, int32_t body, const double** out_xyz, int32_t* out_count) {
   return Guarded("dm_body_deformation", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     BodyIndex(w, body);
     NotNull(out_xyz, "out_xyz");
     NotNull(out_count, "out_count");
@@ -260,6 +327,7 @@ dm_status dm_body_deformation(const dm_world* w, int32_t body, const double** ou
 
 dm_status dm_body_copy_crush(const dm_world* w, int32_t body, double* crush, int32_t capacity, int32_t* out_count) {
   return Guarded("dm_body_copy_crush", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     BodyIndex(w, body);
     NotNull(out_count, "out_count");
     const std::vector<double> c = dymesh::VertexCrush(Sim(w), body);
@@ -273,49 +341,49 @@ dm_status dm_body_copy_crush(const dm_world* w, int32_t body, double* crush, int
 
 dm_status dm_world_summary_json(dm_world* w, const char** out_text) {
   return Guarded("dm_world_summary_json", [&] {
-    NotNull(w, "world");
+    const WorldAccess access(w, WorldAccess::kRead);
     NotNull(out_text, "out_text");
-    const dymesh::Simulation& sim = *w->sim;
-    if (w->summary_steps != sim.steps() || w->summary_finished != sim.finished()) {
-      w->summary_text = dymesh::SummaryJson(dymesh::Summarize(sim), sim.scenario(), dymesh::OutputFileNames(sim.scenario()));
-      w->summary_steps = sim.steps();
-      w->summary_finished = sim.finished();
-    }
-    *out_text = w->summary_text.c_str();
+    *out_text = SummaryText(w).c_str();
   });
 }
 
 dm_status dm_world_copy_summary_json(dm_world* w, char* buffer, size_t size, size_t* needed) {
-  const char* text = nullptr;
-  if (const dm_status s = dm_world_summary_json(w, &text); s != DM_OK) return s;
   return Guarded("dm_world_copy_summary_json", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     NotNull(needed, "needed");
-    *needed = std::strlen(text) + 1;
+    const std::string& text = SummaryText(w);
+    *needed = text.size() + 1;
     Require(size >= *needed, "buffer of " + std::to_string(size) + " bytes is below the " + std::to_string(*needed) +
                                  " the summary needs");
     NotNull(buffer, "buffer");
-    std::memcpy(buffer, text, *needed);
+    std::memcpy(buffer, text.c_str(), *needed);
   });
 }
 
 dm_status dm_world_write_outputs(dm_world* w, const char* dir) {
-  bool folder_taken = false;
+  bool summary_made = false, folder_taken = false;
   const dm_status s = Guarded("dm_world_write_outputs", [&] {
-    NotNull(w, "world");
+    const WorldAccess access(w, WorldAccess::kChange);
     NotNull(dir, "dir");
     Require(*dir != '\0', "dir: expected a folder name, got \"\"");
     const dymesh::Simulation& sim = *w->sim;
+    // the summary and its text before the folder is touched: a run they cannot describe writes nothing
+    // (WriteOutputs makes the text last, after the meshes)
+    const dymesh::Summary summary = dymesh::Summarize(sim);
+    dymesh::SummaryJson(summary, sim.scenario(), dymesh::OutputFileNames(sim.scenario()));
+    summary_made = true;
     dymesh::OutputFolder folder(dir, dymesh::OutputFileNames(sim.scenario()), dymesh::InputFiles(sim.scenario()), "dir");
     folder_taken = true;
     folder.ReplacePreviousRun();
-    dymesh::WriteOutputs(sim, dymesh::Summarize(sim), dir);
+    dymesh::WriteOutputs(sim, summary, dir);
   });
   // a folder that cannot take the outputs, or a write that failed, is an I/O failure
-  return s == DM_ERROR_INTERNAL || (s == DM_ERROR_INPUT && !folder_taken) ? DM_ERROR_IO : s;
+  return (s == DM_ERROR_INTERNAL && summary_made) || (s == DM_ERROR_INPUT && summary_made && !folder_taken) ? DM_ERROR_IO : s;
 }
 
 dm_status dm_world_state_hash(const dm_world* w, uint64_t* out) {
   return Guarded("dm_world_state_hash", [&] {
+    const WorldAccess access(w, WorldAccess::kRead);
     NotNull(out, "out");
     const dymesh::ContactEngine& engine = Sim(w).engine();
     std::uint64_t h = dymesh::kFnv1aBasis;
@@ -333,7 +401,7 @@ void dm_world_destroy(dm_world* w) { delete w; }
 
 dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t count, double dt, dm_loads* out_loads) {
   return Guarded("dm_world_host_step", [&] {
-    NotNull(w, "world");
+    const WorldAccess access(w, WorldAccess::kChange);
     NotNull(out_loads, "out_loads");
     Require(dt > 0.0 && dt <= dymesh::kDurationRange.hard_hi, "dt: expected a step > 0 and at most 1e4 s");
     const dymesh::StepResult step = w->sim->HostStep(States(w, states, count), dt);
@@ -348,7 +416,11 @@ dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t c
 
 dm_status dm_world_host_finish(dm_world* w, const dm_body_state* states, int32_t count) {
   return Guarded("dm_world_host_finish", [&] {
-    NotNull(w, "world");
+    const WorldAccess access(w, WorldAccess::kChange);
+    // a host-driven run is one host step or more: ended before its first, it read "complete" with
+    // 0 steps (a sweep, 2026-11-28)
+    if (!w->sim->finished() && w->sim->steps() == 0)
+      throw std::logic_error("no host step taken: a host-driven run ends after its first dm_world_host_step");
     w->sim->FinishHostRun(States(w, states, count));
   });
 }

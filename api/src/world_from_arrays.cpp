@@ -18,15 +18,30 @@
 namespace dymesh::api {
 namespace {
 
-// bytes of dm_body_desc before the fields appended since the first ABI (a caller built with that
-// header passes this struct_size)
-constexpr size_t kBodyDescFirstSize = offsetof(dm_body_desc, motion);
-// the largest element a later header may make dm_body_desc (a stride beyond it is a wrong size,
-// not a newer struct: read as one, it walked the array off the caller's memory)
-constexpr size_t kBodyDescLargestSize = 4096;
-// the same for dm_world_desc
-constexpr size_t kWorldDescFirstSize = offsetof(dm_world_desc, search_direction);
-constexpr size_t kWorldDescLargestSize = 4096;
+// the sizes each definition struct was published with, this header's first: a caller passes the
+// size of the header it was built with. Any other size is a mistake: past sizeof it would hold
+// fields this library does not read, partway through a field it would be half read (a sweep,
+// 2026-11-28). The first ABI's structs (2026-11-23) end where the appended fields begin: dm_body_desc
+// before `motion` (appended 2026-11-24), dm_world_desc before `search_direction` (2026-11-28)
+constexpr size_t kBodyDescSizes[] = {sizeof(dm_body_desc), offsetof(dm_body_desc, motion)};
+constexpr size_t kWorldDescSizes[] = {sizeof(dm_world_desc), offsetof(dm_world_desc, search_direction)};
+static_assert(offsetof(dm_body_desc, motion) == offsetof(dm_body_desc, initial) + sizeof(dm_body_state),
+              "the first dm_body_desc ended with `initial`, no padding after it");
+static_assert(offsetof(dm_world_desc, search_direction) == offsetof(dm_world_desc, passes_per_step) + sizeof(int32_t) &&
+                  offsetof(dm_world_desc, search_direction) % alignof(dm_world_desc) == 0,
+              "the first dm_world_desc ended with `passes_per_step`, no padding after it");
+
+// the published sizes of a struct, for messages: "224 (this header) or 216 (the first ABI, before motion)"
+std::string PublishedSizes(const size_t (&sizes)[2], const char* appended) {
+  return std::to_string(sizes[0]) + " (this header) or " + std::to_string(sizes[1]) + " (the first ABI, before " +
+         appended + ")";
+}
+
+// a struct_size refused unless it is one of the published sizes
+void RequirePublishedSize(size_t size, const size_t (&sizes)[2], const std::string& field, const char* appended) {
+  Require(size == sizes[0] || size == sizes[1],
+          field + ": expected " + PublishedSizes(sizes, appended) + ", got " + std::to_string(size));
+}
 
 // a value refused outside its physical range and warned outside the plausible one (io's
 // CheckPhysical, in SI)
@@ -45,20 +60,19 @@ void CheckRange(const std::string& field, double value, const PhysicalRange& r, 
                              text(r.lo) + " .. " + text(r.hi) + ": check the value and its unit"});
 }
 
-// body i of the caller's array, whose elements are struct_size bytes apart; fields the caller's
-// header did not have read as 0 (their defaults), fields of a newer header are not read
+// body i of the caller's array, whose elements are bodies[0].struct_size bytes apart (a published
+// size); fields the caller's header did not have read as 0 (their defaults)
 dm_body_desc BodyDescAt(const dm_body_desc* bodies, int i) {
   size_t stride = 0;
   std::memcpy(&stride, bodies, sizeof stride);
-  Require(stride >= kBodyDescFirstSize && stride <= kBodyDescLargestSize,
-          "bodies[0].struct_size: expected sizeof(dm_body_desc) (" + std::to_string(sizeof(dm_body_desc)) +
-              " in this library), got " + std::to_string(stride));
+  RequirePublishedSize(stride, kBodyDescSizes, "bodies[0].struct_size", "motion");
   const auto* element = reinterpret_cast<const unsigned char*>(bodies) + static_cast<size_t>(i) * stride;
   dm_body_desc d;
   std::memset(&d, 0, sizeof d);
   std::memcpy(&d, element, std::min(stride, sizeof d));
   const std::string at = "bodies[" + std::to_string(i) + "]";
-  Require(d.struct_size == stride, at + ".struct_size: expected the same size as bodies[0]'s");
+  Require(d.struct_size == stride, at + ".struct_size: expected bodies[0]'s " + std::to_string(stride) +
+                                       " (the array's elements are that far apart), got " + std::to_string(d.struct_size));
   return d;
 }
 
@@ -82,7 +96,8 @@ TriMesh MeshFromDesc(const dm_body_desc& d, const std::string& at, std::vector<R
   NotNull(d.vertices, at + ".vertices");
   NotNull(d.triangles, at + ".triangles");
   Require(d.vertex_count >= 3 && d.triangle_count >= 1, at + ": expected at least 3 vertices and 1 triangle");
-  Require(Finite(d.vertices, 3 * static_cast<size_t>(d.vertex_count)), at + ".vertices: not finite");
+  for (size_t k = 0; k < 3 * static_cast<size_t>(d.vertex_count); ++k)
+    RequireFinite(d.vertices[k], at + ".vertices[" + std::to_string(k) + "]");
   TriMesh mesh;
   for (size_t v = 0; v < static_cast<size_t>(d.vertex_count); ++v)
     mesh.vertices.emplace_back(d.vertices[3 * v], d.vertices[3 * v + 1], d.vertices[3 * v + 2]);
@@ -91,6 +106,9 @@ TriMesh MeshFromDesc(const dm_body_desc& d, const std::string& at, std::vector<R
     for (int k : tri) Require(k >= 0 && k < d.vertex_count, at + ".triangles: vertex index out of range");
     mesh.triangles.push_back(tri);
   }
+  // every face outward, as a mesh file's (a face wound against its neighbours, or the whole mesh wound
+  // in, read its inside as the outside); the vertices keep their indices
+  OrientOutward(&mesh);
   // as a mesh file's built body (CheckRunStart) and a scenario's CG about its mesh
   const MeshStats stats = ComputeStats(mesh);
   CheckRange(at + ".vertices", (stats.max - stats.min).maxCoeff(), kBodySizeRange, " m (largest extent)", warnings);
@@ -110,12 +128,20 @@ void CheckInitial(const dm_body_desc& d, MotionModel motion, const std::string& 
   CheckRange(at + ".initial.roll", s.roll / units::kDegree, kTiltRange, "", warnings);
   CheckRange(at + ".initial.pitch", s.pitch / units::kDegree, kTiltRange, "", warnings);
   CheckRange(at + ".initial.velocity", std::hypot(s.velocity[0], s.velocity[1], s.velocity[2]), kSpeedRange, " m/s", warnings);
-  CheckRange(at + ".initial.omega", std::hypot(s.omega[0], s.omega[1], s.omega[2]) / units::kDegree, kYawRateRange, "",
-             warnings);
+  // the angular rate: each component named (refused past the bound alone), then its size (refused
+  // and warned as a scenario's yaw rate)
+  const char* rates[] = {"roll rate p [deg/s]", "pitch rate q [deg/s]", "yaw rate r [deg/s]"};
+  for (int k = 0; k < 3; ++k) {
+    const PhysicalRange bound{kYawRateRange.hard_lo, kYawRateRange.hard_hi, kYawRateRange.hard_lo, kYawRateRange.hard_hi, rates[k]};
+    CheckRange(at + ".initial.omega[" + std::to_string(k) + "]", s.omega[k] / units::kDegree, bound, "", warnings);
+  }
+  PhysicalRange rate = kYawRateRange;
+  rate.what = "angular rate |omega| [deg/s]";
+  CheckRange(at + ".initial.omega", std::hypot(s.omega[0], s.omega[1], s.omega[2]) / units::kDegree, rate, "", warnings);
   // a planar body holds its height: a vertical velocity would be dropped (delta-V and the energy
   // balance read wrong)
   Require(motion != MotionModel::kPlanar || s.velocity[2] == 0.0,
-          at + ".initial.velocity[2]: a planar body holds its height: expected 0, got " + std::to_string(s.velocity[2]) +
+          at + ".initial.velocity[2]: a planar body holds its height: expected 0, got " + Number(s.velocity[2]) +
               " m/s (give DM_MOTION_FREE or DM_MOTION_GRAVITY for vertical motion)");
 }
 
@@ -124,9 +150,14 @@ std::shared_ptr<const BodyModel> BodyFromDesc(const dm_body_desc& d, int i, Body
                                               std::vector<RunWarning>* warnings) {
   const std::string at = "bodies[" + std::to_string(i) + "]";
   Require(d.name != nullptr && d.name[0] != '\0', at + ".name: expected a non-empty name");
+  // the summary and the report are UTF-8: a name that is not was taken, and failed only there
+  Require(IsUtf8(d.name), at + ".name: expected UTF-8 text, got \"" + HexEscaped(d.name) + "\"");
   Require(UsableInFileNames(d.name), at + ".name: expected " + kFileNameRule + ", got \"" + Printable(d.name) + "\"");
   TriMesh mesh = MeshFromDesc(d, at, warnings);
   const bool fixed = d.fixed != 0, rigid = d.rigid != 0;
+  // finite even where unused (a fixed body's mass and inertia): a NaN is a mistake wherever it is
+  RequireFinite(d.mass, at + ".mass");
+  for (int k = 0; k < 3; ++k) RequireFinite(d.inertia[k], at + ".inertia[" + std::to_string(k) + "]");
   Require(fixed || (std::isfinite(d.mass) && d.mass > 0.0), at + ".mass: expected a finite mass > 0");
   Require(fixed || (Finite(d.inertia, 3) && d.inertia[0] > 0 && d.inertia[1] > 0 && d.inertia[2] > 0),
           at + ".inertia: expected three finite values > 0");
@@ -158,21 +189,19 @@ std::shared_ptr<const BodyModel> BodyFromDesc(const dm_body_desc& d, int i, Body
   spec->motion = MotionFromDesc(d, at);
   spec->restitution = d.restitution, spec->friction = d.friction;
   spec->stiffness = k;
-  spec->initial = ToRigid(d.initial, i);
+  spec->initial = ToRigid(d.initial, at + ".initial");
   CheckInitial(d, spec->motion, at, warnings);
   const Mat3 inertia = fixed ? Mat3::Identity() : Vec3(d.inertia[0], d.inertia[1], d.inertia[2]).asDiagonal().toDenseMatrix();
   return std::make_shared<const BodyModel>(
       MakeBodyModel(d.name, std::move(mesh), k, spec->mass, inertia, d.restitution, d.friction, rigid));
 }
 
-// the caller's world description: fields its header did not have read as 0 (their defaults), fields
-// of a newer header are not read
+// the caller's world description (a published size): fields its header did not have read as 0
+// (their defaults)
 dm_world_desc WorldDescFrom(const dm_world_desc* world) {
   size_t size = 0;
   std::memcpy(&size, world, sizeof size);
-  Require(size >= kWorldDescFirstSize && size <= kWorldDescLargestSize,
-          "world.struct_size: expected sizeof(dm_world_desc) (" + std::to_string(sizeof(dm_world_desc)) +
-              " in this library), got " + std::to_string(size));
+  RequirePublishedSize(size, kWorldDescSizes, "world.struct_size", "search_direction");
   dm_world_desc d;
   std::memset(&d, 0, sizeof d);
   std::memcpy(&d, world, std::min(size, sizeof d));
@@ -204,13 +233,21 @@ void ReadSearch(const dm_world_desc& d, ContactOptions* o) {
 
 // the scenario part of a world description
 Scenario ScenarioFromDesc(const dm_world_desc& d) {
-  Require(std::isfinite(d.time_step) && d.time_step > 0, "world.time_step: expected a finite step > 0");
-  Require(std::isfinite(d.duration) && d.duration >= d.time_step, "world.duration: expected a duration >= the step");
-  Require(d.passes_per_step >= 0 && d.passes_per_step <= 1000, "world.passes_per_step: expected 0..1000");
+  // each time on its own, then the step against the duration (blamed on the step, as a scenario
+  // file's time.step)
+  Require(std::isfinite(d.time_step) && d.time_step > 0,
+          "world.time_step: expected a finite step > 0 s, got " + Number(d.time_step));
+  Require(std::isfinite(d.duration), "world.duration: expected a finite duration [s], got " + Number(d.duration));
+  Require(d.duration > 0, "world.duration: expected a duration > 0 s, got " + Number(d.duration));
+  Require(d.passes_per_step >= 0 && d.passes_per_step <= 1000,
+          "world.passes_per_step: expected 0..1000, got " + std::to_string(d.passes_per_step));
   Scenario s;
   CheckRange("world.duration", d.duration, kDurationRange, " s", &s.warnings);
+  Require(d.time_step <= d.duration, "world.time_step: expected a step no longer than world.duration (" +
+                                         Number(d.duration) + " s), got " + Number(d.time_step) + " s");
   Require(d.duration / d.time_step <= kMaxSteps,
-          "world.duration: expected at most 1e7 steps (duration / time_step), got " + std::to_string(d.duration / d.time_step));
+          "world.time_step: expected at most 1e7 steps over world.duration (" + Number(d.duration) +
+              " s): a step of at least " + Number(d.duration / kMaxSteps) + " s, got " + Number(d.time_step) + " s");
   s.file = "(dm_world_create)";
   s.units = UnitSystem::kSI;
   s.time_step = d.time_step;
@@ -223,10 +260,14 @@ Scenario ScenarioFromDesc(const dm_world_desc& d) {
 
 }  // namespace
 
-RigidState ToRigid(const dm_body_state& s, int body) {
-  Require(Finite(s.position, 3) && Finite(s.velocity, 3) && Finite(s.omega, 3) && std::isfinite(s.roll) &&
-              std::isfinite(s.pitch) && std::isfinite(s.yaw),
-          "state of body " + std::to_string(body) + " is not finite");
+RigidState ToRigid(const dm_body_state& s, const std::string& at) {
+  // each component named
+  for (int k = 0; k < 3; ++k) RequireFinite(s.position[k], at + ".position[" + std::to_string(k) + "]");
+  RequireFinite(s.roll, at + ".roll");
+  RequireFinite(s.pitch, at + ".pitch");
+  RequireFinite(s.yaw, at + ".yaw");
+  for (int k = 0; k < 3; ++k) RequireFinite(s.velocity[k], at + ".velocity[" + std::to_string(k) + "]");
+  for (int k = 0; k < 3; ++k) RequireFinite(s.omega[k], at + ".omega[" + std::to_string(k) + "]");
   RigidState r;
   r.position = Vec3(s.position[0], s.position[1], s.position[2]);
   r.roll = s.roll, r.pitch = s.pitch, r.yaw = s.yaw;

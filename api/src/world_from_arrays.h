@@ -1,5 +1,6 @@
 #pragma once
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "dymesh/core/body.h"
@@ -15,15 +16,16 @@ struct ArrayWorld {
   std::vector<std::shared_ptr<const BodyModel>> models;
 };
 
-/// The world of `world` (its struct_size bytes: an older caller's shorter struct reads the fields it
-/// lacks as their defaults) and `body_count` descriptions `bodies` (struct_size bytes apart). Throws ArgumentError
-/// naming the field for a value outside its physical range (warned, implausible_value, outside the
-/// plausible one), a name unusable in file names or used twice, a planar body given a vertical
-/// velocity, a mesh of an impossible size; InputError for a deformable body whose mesh encloses no
-/// volume.
+/// The world of `world` (its struct_size bytes, a published size: an older caller's shorter struct
+/// reads the fields it lacks as their defaults) and `body_count` descriptions `bodies` (struct_size
+/// bytes apart). Throws ArgumentError naming the field for a struct_size that is not a published
+/// size, a non-finite value, a value outside its physical range (warned, implausible_value, outside
+/// the plausible one), a name that is not UTF-8, unusable in file names or used twice, a planar body
+/// given a vertical velocity, a mesh of an impossible size; InputError for a deformable body whose
+/// mesh encloses no volume.
 ArrayWorld WorldFromArrays(const dm_world_desc* world, const dm_body_desc* bodies, int32_t body_count);
 
-/// A host's body state, refused (ArgumentError) unless finite.
-RigidState ToRigid(const dm_body_state& s, int body);
+/// A body state, refused (ArgumentError naming the component, `at` + ".velocity[0]") unless finite.
+RigidState ToRigid(const dm_body_state& s, const std::string& at);
 
 }  // namespace dymesh::api

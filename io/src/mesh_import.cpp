@@ -173,8 +173,8 @@ TriMesh BuildBodyMesh(const MeshSource& source, const std::string& scenario_file
                      std::to_string(duplicates) + " duplicated faces (triangles on the same three vertices as another, "
                      "e.g. triangle " + std::to_string(repeat[0]) + " repeats " + std::to_string(repeat[1]) +
                      " after merging coincident vertices): remove them in a mesh editor");
-  // orient outward (open game shells too: the sign about the bounds centre decides)
-  if (SignedVolume(mesh) < 0.0) FlipWinding(&mesh);
+  // every face outward, the faces wound against their neighbours too
+  OrientOutward(&mesh);
   return mesh;
 }
 

@@ -2,12 +2,15 @@
  * byte-identical to the command's summary.json, equal state hashes at 1, 2 and 4 threads), and
  * force-provider mode (bodies from arrays, a host integrating them with the loads it is given).
  * Usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR. Prints each failed check; exits 1 if any failed. */
-#define _POSIX_C_SOURCE 200809L /* strdup */
+#define _POSIX_C_SOURCE 200809L /* strdup, pthreads */
 #include <math.h>
+#include <pthread.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <time.h>
 
 #include "dymesh/dymesh.h"
 
@@ -59,7 +62,8 @@ static void test_arguments(const char* scenario) {
   CHECK(dm_world_host_step(w, states, 2, 0.0, loads) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "dt"));
   CHECK(dm_world_host_step(w, states, 2, -1.0, loads) == DM_ERROR_ARGUMENT);
   states[0].velocity[0] = NAN;
-  CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "not finite"));
+  CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_ERROR_ARGUMENT &&
+        contains(dm_last_error(), "states[0].velocity[0]: expected a finite number, got nan"));
   size_t needed = 0;
   char small[8];
   CHECK(dm_world_copy_summary_json(w, small, sizeof small, &needed) == DM_ERROR_ARGUMENT && needed > sizeof small);
@@ -167,6 +171,35 @@ static dm_world* car_into_wall(car_and_wall* s) {
   dm_world* w = NULL;
   CHECK(dm_world_create(&desc, s->bodies, 2, &w) == DM_OK);
   return w;
+}
+
+/* the box car's mesh wound inward, or with one face wound against its neighbours: turned outward, the
+   same run bit for bit as the car wound outward (before, the inward car ran 2.75 m through the wall) */
+static void test_winding(void) {
+  uint64_t reference = 0;
+  for (int variant = 0; variant < 3; ++variant) {
+    car_and_wall s;
+    make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+    for (int t = 0; t < 12; ++t)
+      if (variant == 2 || (variant == 1 && t == 0)) {
+        const int32_t corner = s.car_t[3 * t + 1];
+        s.car_t[3 * t + 1] = s.car_t[3 * t + 2];
+        s.car_t[3 * t + 2] = corner;
+      }
+    dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3,
+                          .stop_at_separation = 1, .passes_per_step = 2};
+    dm_world* w = NULL;
+    CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+    if (!w) return;
+    CHECK(dm_world_run(w) == DM_OK);
+    uint64_t hash = 0;
+    double dv[3];
+    CHECK(dm_world_state_hash(w, &hash) == DM_OK && dm_body_delta_v(w, 0, dv) == DM_OK);
+    CHECK(dv[0] < -13.4); /* stopped by the wall */
+    if (variant == 0) reference = hash;
+    CHECK(hash == reference);
+    dm_world_destroy(w);
+  }
 }
 
 /* force-provider mode: the host integrates a box car into a fixed wall with the loads it gets */
@@ -451,6 +484,218 @@ static void test_search_options(void) {
   CHECK(w == NULL);
 }
 
+/* the published sizes of the definition structs (found by a sweep of the C ABI, 2026-11-28: a size past
+   sizeof, or one ending partway through a field, was taken and the bytes beyond it ignored or half read) */
+static void test_struct_sizes(void) {
+  car_and_wall s;
+  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+  char sizes[64];
+  dm_world* w = NULL;
+  /* the world: this header's size and the first ABI's (before search_direction) are taken */
+  unsigned char buffer[sizeof(dm_world_desc) + 16];
+  const size_t world_sizes[] = {offsetof(dm_world_desc, search_direction), sizeof(dm_world_desc),
+                                /* refused: */ 0, 12, offsetof(dm_world_desc, stop_rule),
+                                offsetof(dm_world_desc, specified_direction) + 8, sizeof(dm_world_desc) + 8};
+  for (int k = 0; k < 7; ++k) {
+    dm_world_desc desc = {.struct_size = world_sizes[k], .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+    memset(buffer, 0, sizeof buffer);
+    memcpy(buffer, &desc, sizeof desc);
+    const dm_status status = dm_world_create((const dm_world_desc*)buffer, s.bodies, 2, &w);
+    if (k < 2) {
+      CHECK(status == DM_OK);
+    } else {
+      snprintf(sizes, sizeof sizes, "%zu (this header) or %zu", sizeof(dm_world_desc), offsetof(dm_world_desc, search_direction));
+      CHECK(status == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.struct_size: expected") && contains(dm_last_error(), sizes));
+    }
+    dm_world_destroy(w);
+    w = NULL;
+  }
+  /* the bodies: this header's size and the first ABI's (before motion), elements that far apart */
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+  unsigned char packed[2 * (sizeof(dm_body_desc) + 16)];
+  const size_t body_sizes[] = {offsetof(dm_body_desc, motion), sizeof(dm_body_desc),
+                               /* refused: */ offsetof(dm_body_desc, motion) + 4, offsetof(dm_body_desc, initial),
+                               sizeof(dm_body_desc) + 8, sizeof(dm_body_desc) + 16};
+  for (int k = 0; k < 6; ++k) {
+    memset(packed, 0, sizeof packed);
+    for (int i = 0; i < 2; ++i) {
+      dm_body_desc b = s.bodies[i];
+      b.struct_size = body_sizes[k];
+      memcpy(packed + i * body_sizes[k], &b, body_sizes[k] < sizeof b ? body_sizes[k] : sizeof b);
+    }
+    const dm_status status = dm_world_create(&desc, (const dm_body_desc*)packed, 2, &w);
+    if (k < 2) {
+      CHECK(status == DM_OK);
+    } else {
+      snprintf(sizes, sizeof sizes, "%zu (this header) or %zu", sizeof(dm_body_desc), offsetof(dm_body_desc, motion));
+      CHECK(status == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].struct_size: expected") && contains(dm_last_error(), sizes));
+    }
+    dm_world_destroy(w);
+    w = NULL;
+  }
+  /* one array, two sizes: the elements are bodies[0]'s size apart */
+  s.bodies[1].struct_size = offsetof(dm_body_desc, motion);
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[1].struct_size: expected bodies[0]'s"));
+  CHECK(w == NULL);
+}
+
+/* refusals name the field and what was expected, with short numbers (a sweep of the C ABI, 2026-11-28:
+   "state of body 0 is not finite", a NaN duration "expected a duration >= the step", a 1e-300 step
+   blamed on the duration with 300 digits, a roll rate called a yaw rate; a name not UTF-8 taken, its
+   summary then failing with the JSON library's type_error.316; a fixed body's NaN mass taken) */
+static void test_messages(void) {
+  car_and_wall s;
+  const dm_body_state moving = {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}};
+  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+  dm_world* w = NULL;
+  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  s.bodies[0].initial.velocity[0] = NAN;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].initial.velocity[0]: expected a finite number, got nan"));
+  s.bodies[0].initial.velocity[0] = 13.4;
+  s.bodies[1].initial.yaw = -INFINITY;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[1].initial.yaw: expected a finite number, got -inf"));
+  s.bodies[1].initial.yaw = 0.0;
+  s.bodies[0].initial.omega[0] = 1e300;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].initial.omega[0]: expected a physically possible roll rate") &&
+        !contains(dm_last_error(), "yaw rate"));
+  s.bodies[0].initial.omega[0] = 0.0;
+  /* a fixed body's mass and inertia are not used, but a non-finite one is still a mistake */
+  s.bodies[1].mass = NAN;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[1].mass: expected a finite number"));
+  s.bodies[1].mass = 0.0;
+  s.bodies[1].inertia[2] = INFINITY;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[1].inertia[2]: expected a finite number"));
+  s.bodies[1].inertia[2] = 0.0;
+  /* names: UTF-8 text, or refused before the summary needs them */
+  const char* bad_names[] = {"\xff\xfe", "ab\xc3", "\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80"};
+  for (int k = 0; k < 5; ++k) {
+    s.bodies[0].name = bad_names[k];
+    CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].name: expected UTF-8 text"));
+  }
+  s.bodies[0].name = "Citro\xc3\xabn C4 \xe2\x80\x93 \xf0\x9f\x9a\x97";
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
+  const char* text = NULL;
+  CHECK(dm_world_summary_json(w, &text) == DM_OK && contains(text, s.bodies[0].name));
+  dm_world_destroy(w);
+  w = NULL;
+  s.bodies[0].name = "car";
+  /* the world's times */
+  desc.duration = NAN;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.duration: expected a finite duration"));
+  desc.duration = 0.3;
+  desc.time_step = 2.0;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.time_step: expected a step no longer than world.duration (0.3 s), got 2 s"));
+  desc.time_step = 1e-300;
+  CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.time_step: expected at most 1e7 steps") &&
+        strlen(dm_last_error()) < 200);
+  desc.time_step = 0.0005;
+  CHECK(w == NULL);
+  /* a copy's refusal is the copy's */
+  char small[8];
+  size_t needed = 0;
+  CHECK(dm_world_copy_summary_json(NULL, small, sizeof small, &needed) == DM_ERROR_ARGUMENT &&
+        contains(dm_last_error(), "dm_world_copy_summary_json: world is null"));
+  w = car_into_wall(&s);
+  CHECK(dm_world_copy_summary_json(w, small, sizeof small, &needed) == DM_ERROR_ARGUMENT &&
+        contains(dm_last_error(), "dm_world_copy_summary_json: buffer of 8 bytes"));
+  /* a host run ended before its first step (it reported "complete" with 0 steps) */
+  dm_body_state states[2];
+  dm_loads loads[2];
+  CHECK(dm_body_state_get(w, 0, &states[0]) == DM_OK && dm_body_state_get(w, 1, &states[1]) == DM_OK);
+  CHECK(dm_world_host_finish(w, states, 2) == DM_ERROR_STATE && contains(dm_last_error(), "dm_world_host_finish: no host step taken"));
+  CHECK(dm_world_host_step(w, states, 2, 0.0005, loads) == DM_OK && dm_world_host_finish(w, states, 2) == DM_OK);
+  dm_world_destroy(w);
+}
+
+/* a world run in one thread, and calls on it from another */
+typedef struct running {
+  dm_world* w;
+  dm_status status;
+  int done;
+  pthread_mutex_t lock;
+} running;
+
+static void* run_world(void* arg) {
+  running* r = arg;
+  const dm_status status = dm_world_run(r->w);
+  pthread_mutex_lock(&r->lock);
+  r->status = status, r->done = 1;
+  pthread_mutex_unlock(&r->lock);
+  return NULL;
+}
+
+static int run_done(running* r) {
+  pthread_mutex_lock(&r->lock);
+  const int done = r->done;
+  pthread_mutex_unlock(&r->lock);
+  return done;
+}
+
+/* refused because another thread's call is under way on the same world */
+static int busy(dm_status status) {
+  return status == DM_ERROR_STATE && contains(dm_last_error(), "another call on this world is in progress");
+}
+
+/* one call at a time on a world: while one thread runs it, every call from another is refused (a
+   sweep of the C ABI, 2026-11-28: a step beside a run corrupted the heap) and the run is as alone */
+static void test_one_call_at_a_time(const char* scenario, const char* work) {
+  dm_world* alone = NULL;
+  uint64_t expected = 0, hash = 0;
+  CHECK(dm_world_load_scenario(scenario, &alone) == DM_OK && dm_world_run(alone) == DM_OK &&
+        dm_world_state_hash(alone, &expected) == DM_OK);
+  dm_world_destroy(alone);
+  int conclusive = 0;
+  /* the calls are made while the run lasts (0.3 s; a few microseconds for the calls), once it has
+     begun (20 ms after its thread started; a call of this thread as it begins would refuse it): tried
+     again should a loaded machine stall either thread */
+  for (int attempt = 0; attempt < 5 && !conclusive; ++attempt) {
+    running r = {NULL, DM_OK, 0, PTHREAD_MUTEX_INITIALIZER};
+    CHECK(dm_world_load_scenario(scenario, &r.w) == DM_OK);
+    if (!r.w) return;
+    char dir[8192];
+    struct stat made;
+    for (int k = 0; k == 0 || stat(dir, &made) == 0; ++k) /* a folder no earlier attempt made */
+      snprintf(dir, sizeof dir, "%s/while_running_%d", work, k);
+    pthread_t thread;
+    CHECK(pthread_create(&thread, NULL, run_world, &r) == 0);
+    const struct timespec begun = {0, 20000000};
+    nanosleep(&begun, NULL);
+    double t = 0.0;
+    int refused = 0;
+    if (busy(dm_world_time(r.w, &t))) {
+      int32_t finished = 0, count = 0;
+      dm_body_state states[2];
+      dm_loads loads[2];
+      double dv[3];
+      const char* text = NULL;
+      char small[8];
+      size_t needed = 0;
+      memset(states, 0, sizeof states);
+      refused += busy(dm_world_step(r.w, &finished));
+      refused += busy(dm_world_run(r.w));
+      refused += busy(dm_world_host_step(r.w, states, 2, 0.0005, loads));
+      refused += busy(dm_world_host_finish(r.w, states, 2));
+      refused += busy(dm_world_write_outputs(r.w, dir));
+      refused += busy(dm_world_summary_json(r.w, &text));
+      refused += busy(dm_world_copy_summary_json(r.w, small, sizeof small, &needed));
+      refused += busy(dm_body_delta_v(r.w, 0, dv));
+      refused += busy(dm_body_state_get(r.w, 0, &states[0]));
+      refused += busy(dm_body_copy_crush(r.w, 0, dv, 0, &count));
+      refused += busy(dm_world_state_hash(r.w, &hash));
+      conclusive = busy(dm_world_time(r.w, &t)) && !run_done(&r);
+    }
+    pthread_join(thread, NULL);
+    if (conclusive) {
+      CHECK(r.status == DM_OK);
+      CHECK(refused == 11);
+      CHECK(stat(dir, &made) != 0); /* the refused write made no folder */
+      CHECK(dm_world_state_hash(r.w, &hash) == DM_OK && hash == expected);
+    }
+    dm_world_destroy(r.w);
+  }
+  CHECK(conclusive);
+}
+
 int main(int argc, char** argv) {
   if (argc != 4) {
     fprintf(stderr, "usage: c_api_test DATA_DIR DYMESH_CLI WORK_DIR\n");
@@ -462,10 +707,14 @@ int main(int argc, char** argv) {
   test_world_mode(scenario, argv[2], argv[3]);
   test_threads(scenario);
   test_force_provider();
+  test_winding();
   test_motion();
   test_create_checks();
   test_states();
   test_search_options();
+  test_struct_sizes();
+  test_messages();
+  test_one_call_at_a_time(scenario, argv[3]);
   if (failures) fprintf(stderr, "%d checks failed\n", failures);
   return failures ? 1 : 0;
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -464,6 +465,92 @@ TEST(BuildBodyMesh, OrientsInwardMeshOutward) {
   // an improper mapping (a mirror) also ends outward
   source.axes = {"-x", "y", "z"};
   EXPECT_NEAR(SignedVolume(BuildBodyMesh(source, "(test)", "m")), 1.0, 1e-9);
+}
+
+// each face's corners in a rotation that starts at its lowest index (the same face, wound the same way)
+std::vector<std::array<int, 3>> CanonicalFaces(const TriMesh& mesh) {
+  std::vector<std::array<int, 3>> faces;
+  for (auto t : mesh.triangles) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    faces.push_back(t);
+  }
+  return faces;
+}
+
+// the faces as their corners' places, each from its least corner on, sorted: the same surface wound the
+// same way whatever the vertices' numbering
+std::vector<std::array<std::array<double, 3>, 3>> FacesByPlace(const TriMesh& mesh) {
+  std::vector<std::array<std::array<double, 3>, 3>> faces;
+  for (const auto& t : mesh.triangles) {
+    std::array<std::array<double, 3>, 3> f;
+    for (int k = 0; k < 3; ++k) f[k] = {mesh.vertices[t[k]].x(), mesh.vertices[t[k]].y(), mesh.vertices[t[k]].z()};
+    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    faces.push_back(f);
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
+// every edge two faces share is run once each way: the faces agree on their winding
+bool WoundAlike(const TriMesh& mesh) {
+  std::set<std::pair<int, int>> runs;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (!runs.insert({t[k], t[(k + 1) % 3]}).second) return false;
+  return true;
+}
+
+TEST(OrientOutward, TurnsFacesWoundAgainstTheirNeighboursAndInwardClosedParts) {
+  // a box (2 x 1 x 1 m, 4 x 2 x 2 cells) with every third face wound inward: all outward again, the
+  // same faces as the box's own, the turned ones counted
+  const TriMesh box = MakeBox(2.0, 1.0, 1.0, 4, 2, 2);
+  TriMesh mixed = box;
+  for (std::size_t t = 0; t < mixed.triangles.size(); t += 3) std::swap(mixed.triangles[t][1], mixed.triangles[t][2]);
+  EXPECT_FALSE(WoundAlike(mixed));
+  EXPECT_EQ(OrientOutward(&mixed), static_cast<int>((box.triangles.size() + 2) / 3));
+  EXPECT_EQ(CanonicalFaces(mixed), CanonicalFaces(box));
+  // the whole box wound inward but a third of its faces: turned as a whole, the third on their own
+  TriMesh inward = box;
+  FlipWinding(&inward);
+  for (std::size_t t = 0; t < inward.triangles.size(); t += 3) std::swap(inward.triangles[t][1], inward.triangles[t][2]);
+  EXPECT_EQ(OrientOutward(&inward), static_cast<int>((box.triangles.size() + 2) / 3));
+  EXPECT_EQ(CanonicalFaces(inward), CanonicalFaces(box));
+  // a closed part wound inward inside an outward body (a wheel inside a car's shell): it faces out by
+  // its own volume, 8 + 1 m^3 in all
+  TriMesh two = MakeBox(4.0, 2.0, 1.0, 2, 2, 1);
+  TriMesh part = MakeBox(1.0, 1.0, 1.0, 1, 1, 1);
+  FlipWinding(&part);
+  const int offset = static_cast<int>(two.vertices.size());
+  for (const Vec3& v : part.vertices) two.vertices.push_back(v + Vec3(0.5, 0.0, 0.0));
+  for (const auto& t : part.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  EXPECT_EQ(OrientOutward(&two), 12);
+  EXPECT_NEAR(SignedVolume(two), 9.0, 1e-12);
+  EXPECT_TRUE(WoundAlike(two));
+  // an open sheet of two faces wound against each other keeps its first face's winding on the tie
+  TriMesh sheet;
+  sheet.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  sheet.triangles = {{0, 1, 2}, {0, 3, 2}};
+  EXPECT_EQ(OrientOutward(&sheet), 1);
+  EXPECT_TRUE(WoundAlike(sheet));
+  // a consistent outward mesh is left exactly as it was
+  TriMesh same = box;
+  EXPECT_EQ(OrientOutward(&same), 0);
+  EXPECT_EQ(same.triangles, box.triangles);
+}
+
+TEST(BuildBodyMesh, FacesWoundAgainstTheirNeighboursAreTurned) {
+  // the same box written with a third of its faces wound inward builds the same body as the clean file
+  const TempFolder dir;
+  const TriMesh box = MakeBox(4.572, 1.6764, 0.762, 1, 22, 10);
+  TriMesh mixed = box;
+  for (std::size_t t = 0; t < mixed.triangles.size(); t += 3) std::swap(mixed.triangles[t][1], mixed.triangles[t][2]);
+  WriteObj(box, (dir / "clean.obj").string(), "clean box");
+  WriteObj(mixed, (dir / "mixed.obj").string(), "a third of the faces wound inward");
+  MeshSource clean, turned;
+  clean.file = (dir / "clean.obj").string();
+  turned.file = (dir / "mixed.obj").string();
+  // (the vertices are numbered as the faces first meet them: the faces compared by their corners' places)
+  EXPECT_EQ(FacesByPlace(BuildBodyMesh(clean, "(test)", "m")), FacesByPlace(BuildBodyMesh(turned, "(test)", "m")));
 }
 
 TEST(BuildBodyMesh, BoxAndRefusedAxes) {

@@ -4,6 +4,7 @@ DYMESH_DATA_DIR and DYMESH_CLI name the data folder and the command."""
 import gc
 import json
 import os
+import pathlib
 import signal
 import subprocess
 import tempfile
@@ -84,6 +85,43 @@ class ScenarioFromPython(unittest.TestCase):
         with self.assertRaisesRegex(dymesh.InputError, r"bodies\[0\]\.initial\.speed: expected a finite number, got nan"):
             dymesh.scenario(spec, os.path.dirname(BARRIER))
 
+    def test_a_dict_that_is_no_json_tree_is_refused_naming_the_path(self):
+        # a sweep of the module, 2026-11-28: a dict holding itself, or a value nested 100,000 deep,
+        # crashed the interpreter (the non-finite check recursed without end)
+        spec = {"name": "x"}
+        spec["self"] = spec
+        with self.assertRaisesRegex(ValueError, r"self: refers back to a value that holds it"):
+            dymesh.scenario(spec)
+        shared = {"b": [1.0, 2.0]}
+        with self.assertRaisesRegex(dymesh.InputError, r"\(root\): expected an object|unknown key"):
+            dymesh.scenario([shared, shared])  # the same list twice is no cycle: the scenario's own checks speak
+        deep = []
+        inner = deep
+        for _ in range(100000):
+            inner.append([])
+            inner = inner[0]
+        with self.assertRaisesRegex(ValueError, r"name(\[0\]){200}: expected values nested at most 200 deep"):
+            dymesh.scenario({"name": deep})
+        # a name Python cannot give as UTF-8 (a lone surrogate) is named, not a byte offset of the JSON text
+        with open(BARRIER, encoding="utf-8") as f:
+            spec = json.load(f)
+        spec["bodies"][0]["name"] = "car\udcff"
+        with self.assertRaisesRegex(dymesh.InputError, r"bodies\[0\]\.name: expected UTF-8 text"):
+            dymesh.scenario(spec, os.path.dirname(BARRIER))
+
+    def test_paths_may_be_path_objects(self):
+        # os.PathLike, as open() takes (a pathlib.Path was a TypeError listing pybind11's signatures)
+        base = pathlib.Path(BARRIER).parent
+        run = dymesh.load_scenario(pathlib.Path(BARRIER))
+        with open(BARRIER, encoding="utf-8") as f:
+            self.assertEqual(dymesh.scenario(json.load(f), base).bodies[0].name, run.bodies[0].name)
+        run.run()
+        with tempfile.TemporaryDirectory() as out:
+            run.write_outputs(pathlib.Path(out) / "outputs")
+            self.assertTrue((pathlib.Path(out) / "outputs" / "summary.json").is_file())
+        with self.assertRaisesRegex(TypeError, "path: expected str, bytes or os.PathLike"):
+            dymesh.load_scenario(5)
+
 
 class Errors(unittest.TestCase):
     def test_engine_messages_become_exceptions(self):
@@ -102,6 +140,24 @@ class Errors(unittest.TestCase):
         bad[0, 6] = np.nan
         with self.assertRaisesRegex(ValueError, "non-finite"):
             run.host_step(bad, 0.0005)
+
+    def test_arguments_of_the_wrong_kind(self):
+        # a sweep of the module, 2026-11-28: dt=True was taken as a step of 1 s; 2**40 threads raised
+        # pybind11's TypeError listing signatures
+        run = dymesh.load_scenario(BARRIER)
+        with self.assertRaisesRegex(TypeError, "dt: expected a number of seconds, got bool"):
+            run.host_step(run.states(), True)
+        with self.assertRaisesRegex(TypeError, "dt: expected a number of seconds, got bool"):
+            run.host_step(run.states(), np.True_)
+        self.assertEqual(run.time, 0.0)
+        run.host_step(run.states(), np.float64(0.0005))  # a numpy number is a number
+        with self.assertRaisesRegex(ValueError, r"threads: expected 0 \(all cores\) \.\. 4096, got 1099511627776"):
+            dymesh.set_threads(2 ** 40)
+        with self.assertRaisesRegex(ValueError, r"threads: expected 0 \(all cores\) \.\. 4096, got -1"):
+            dymesh.set_threads(-1)
+        with self.assertRaisesRegex(TypeError, "threads: expected an int"):
+            dymesh.set_threads(2.0)
+        dymesh.set_threads(0)
 
 
 class RunState(unittest.TestCase):
@@ -122,6 +178,16 @@ class RunState(unittest.TestCase):
         own.step()
         with self.assertRaisesRegex(dymesh.StateError, "stepped by its own integrator"):
             own.host_step(own.states(), 0.0005)
+
+    def test_a_host_run_ends_after_a_host_step(self):
+        # a sweep, 2026-11-28: host_finish before any host step ended the run "complete" with 0 steps
+        run = dymesh.load_scenario(BARRIER)
+        with self.assertRaisesRegex(dymesh.StateError, "no host step taken"):
+            run.host_finish(run.states())
+        self.assertFalse(run.finished)
+        run.host_step(run.states(), 0.0005)
+        run.host_finish(run.states())
+        self.assertTrue(run.finished)
 
     def test_ctrl_c_stops_a_run_between_steps(self):
         # a run of a million steps (no stop at separation), interrupted after 0.3 s as Ctrl-C would

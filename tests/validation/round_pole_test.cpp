@@ -179,38 +179,47 @@ TEST(RoundPole, CrushDeeperThanThePoleCameIsMarked) {
   // the nodes looked at: crushed 4 in or more (the run's check looks at the deepest 256; the deep
   // ones are those a tipped face can carry past the pole)
   constexpr double kDeepCrush = 0.1;
-  int beyond = 0;
-  for (int jitter = 0; jitter < 8; ++jitter) {
-    Scenario s = RoundPole(5.0);
-    s.bodies[1].initial.position.y() += 0.001 * jitter * u::kInch;
-    auto device = std::make_shared<const accel::EmbreeDevice>();
-    Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
-    sim.Run();
-    const BodyState& car = sim.engine().state(0);
-    const std::vector<Vec3>& rest = sim.engine().model(0).mesh.vertices;
-    const PoleTrack pole = TrackPole(sim, 0, 1);
-    double worst = -INFINITY;  // [m] the largest crush beyond the pole's reach
-    for (std::size_t v = 0; v < rest.size(); ++v) {
-      const double crush = car.delta[v].norm();
-      if (crush < kDeepCrush) continue;
-      worst = std::max(worst, crush - PoleReach(pole, rest[v], car.delta[v] / crush));
+  for (const SearchDirection search : {SearchDirection::kVelocity, SearchDirection::kPolyNormal}) {
+    int beyond = 0;
+    // (four starts of the polygon-normal search, which runs long: they all cross the pole's reach)
+    const int starts = search == SearchDirection::kVelocity ? 8 : 4;
+    for (int jitter = 0; jitter < starts; ++jitter) {
+      Scenario s = RoundPole(5.0);
+      s.contact.search_direction = search;
+      s.bodies[1].initial.position.y() += 0.001 * jitter * u::kInch;
+      auto device = std::make_shared<const accel::EmbreeDevice>();
+      Simulation sim(s, BuildBodyModels(s), accel::MakeEmbreeLocatorFactory(device));
+      sim.Run();
+      const BodyState& car = sim.engine().state(0);
+      const std::vector<Vec3>& rest = sim.engine().model(0).mesh.vertices;
+      const PoleTrack pole = TrackPole(sim, 0, 1);
+      double worst = -INFINITY;  // [m] the largest crush beyond the pole's reach
+      for (std::size_t v = 0; v < rest.size(); ++v) {
+        const double crush = car.delta[v].norm();
+        if (crush < kDeepCrush) continue;
+        worst = std::max(worst, crush - PoleReach(pole, rest[v], car.delta[v] / crush));
+      }
+      const Summary sum = Summarize(sim);
+      bool marked = false;
+      for (const RunWarning& w : sum.warnings) marked = marked || (w.code == "crush_beyond_reach" && w.field == "bodies[0]");
+      std::printf("[measured] round pole 5 in off, %s search, moved %d thou: deepest crush %.1f in, %.1f in beyond the "
+                  "pole's reach, marked %d\n", search == SearchDirection::kVelocity ? "velocity" : "polygon-normal",
+                  jitter, sum.bodies[0].max_crush / u::kInch, worst / u::kInch, marked ? 1 : 0);
+      if (worst > 3.5 * u::kInch) {
+        EXPECT_TRUE(marked) << jitter << " thou: crushed beyond the pole's reach, unmarked";
+      }
+      if (worst < 1.0 * u::kInch) {
+        EXPECT_FALSE(marked) << jitter << " thou: within the pole's reach, marked";
+      }
+      beyond += worst >= 3.5 * u::kInch ? 1 : 0;
     }
-    const Summary sum = Summarize(sim);
-    bool marked = false;
-    for (const RunWarning& w : sum.warnings) marked = marked || (w.code == "crush_beyond_reach" && w.field == "bodies[0]");
-    std::printf("[measured] round pole 5 in off, moved %d thou: deepest crush %.1f in, %.1f in beyond the pole's "
-                "reach, marked %d\n", jitter, sum.bodies[0].max_crush / u::kInch, worst / u::kInch, marked ? 1 : 0);
-    if (worst > 3.5 * u::kInch) {
-      EXPECT_TRUE(marked) << jitter << " thou: crushed beyond the pole's reach, unmarked";
-    }
-    if (worst < 1.0 * u::kInch) {
-      EXPECT_FALSE(marked) << jitter << " thou: within the pole's reach, marked";
-    }
-    beyond += worst > 3.5 * u::kInch ? 1 : 0;
+    // with the velocity search the crush stays within the pole's reach since the faces the p406 had wound
+    // inward are turned (68th session: 1 of the 8 at 3.5 in beyond; 7 or 8 of the 8 marked before); the
+    // polygon-normal search still tips the stretched faces past it (12-26 in), which exercises the marking;
+    // delta-V stands (an ensemble keeps the sample)
+    if (search == SearchDirection::kVelocity) EXPECT_LE(beyond, 2);
+    if (search == SearchDirection::kPolyNormal) EXPECT_GT(beyond, 0);
   }
-  // the marking is exercised (8 of the 8 on 2026-11-26; none once the tipped faces are mended: then
-  // this check wants a case of its own); delta-V stands (an ensemble keeps the sample)
-  EXPECT_GT(beyond, 0);
   EXPECT_FALSE(WarningVoidsResults("crush_beyond_reach"));
 }
 

@@ -5,14 +5,25 @@
  *   count; on failure dm_last_error() gives a message for the calling thread. No exception crosses
  *   this boundary.
  * - Every entry point checks its arguments: null pointers, body indices out of range, non-finite
- *   states, dt <= 0 and counts that do not match the world are refused with DM_ERROR_ARGUMENT.
+ *   states, dt <= 0 and counts that do not match the world are refused with DM_ERROR_ARGUMENT,
+ *   the message naming the argument or field (e.g. "states[0].velocity[0]").
  * - Definition structs begin with struct_size (set it to sizeof the struct): later versions append
- *   fields and accept older sizes.
+ *   fields and accept each size the struct was published with (listed at the struct); any other
+ *   size (past sizeof, or ending partway through a field) is DM_ERROR_ARGUMENT.
  * - Views (const pointers into the engine) are read-only and valid until the next call that
  *   changes the world (step, run, host step, destroy); the dm_..._copy variants write into memory
  *   the host owns.
  * - Units: SI (m, kg, s, rad, N) everywhere, except where a call says "in the scenario's units".
  *   Earth frame SAE: x forward, y right, z down; body axes likewise, about the CG.
+ * - Threads: different worlds are independent (each in its own thread, at once). One world takes
+ *   one call that changes it at a time: dm_world_run, dm_world_step, dm_world_host_step,
+ *   dm_world_host_finish and dm_world_write_outputs are refused with DM_ERROR_STATE ("another call
+ *   on this world is in progress") while any other call on the same world runs in another thread,
+ *   and every other call on it (they only read) is refused the same way while one of those runs;
+ *   calls that only read may run beside each other. Nothing waits: the host orders its calls.
+ *   Not checked: dm_world_body_count (it never changes), dm_world_destroy (call it only when no
+ *   other call on the world runs), and reading a view: a view read in one thread while another
+ *   steps the world may show a step in progress.
  *
  * Two ways to use it:
  * - World mode: dm_world_load_scenario (or dm_world_create from arrays), dm_world_run or
@@ -92,7 +103,8 @@ typedef struct dm_body_desc {
   const char* name;        /**< used in the summary and output file names */
   const double* vertices;  /**< [m] x, y, z per vertex, body axes about the CG */
   int32_t vertex_count;
-  const int32_t* triangles; /**< three vertex indices per triangle, wound outward */
+  const int32_t* triangles; /**< three vertex indices per triangle, wound outward (faces wound against their
+                                 neighbours, or a whole mesh wound inward, are turned, as a mesh file's) */
   int32_t triangle_count;
   double mass;              /**< [kg]; ignored for a fixed body */
   double inertia[3];        /**< [kg m^2] Ixx, Iyy, Izz about the CG */
@@ -105,6 +117,9 @@ typedef struct dm_body_desc {
   dm_body_state initial;
   int32_t motion;           /**< a dm_motion; appended 2026-11-24: a struct_size that ends before it means DM_MOTION_DEFAULT */
 } dm_body_desc;
+/* dm_body_desc's published sizes: sizeof(dm_body_desc) (224 on LP64) and, from the first header
+ * (2026-11-23), offsetof(dm_body_desc, motion) (216). Every element of one array has bodies[0]'s
+ * struct_size, and the elements are that many bytes apart. */
 
 /** Where a slave node looks for the master surface (a scenario's contact.search_direction; README
  *  "The model"): where to look, not the force's direction, which is the master surface's normal. */
@@ -138,6 +153,8 @@ typedef struct dm_world_desc {
                                        (normalized; with two deformable bodies warned specified_direction_shared);
                                        otherwise all zero */
 } dm_world_desc;
+/* dm_world_desc's published sizes: sizeof(dm_world_desc) (64 on LP64) and, from the first header
+ * (2026-11-23), offsetof(dm_world_desc, search_direction) (32). */
 
 /** The ABI version this library was built with (DM_ABI_VERSION); compare it with the header's. */
 DM_API uint32_t dm_abi_version(void);
@@ -154,9 +171,11 @@ DM_API dm_status dm_set_threads(int32_t threads);
 DM_API dm_status dm_world_load_scenario(const char* path, dm_world** out);
 
 /** Builds a world from arrays (SI units); `bodies` holds `body_count` descriptions. Held to a
- *  scenario file's checks (README "Physical ranges"): DM_ERROR_ARGUMENT names the field of a value
- *  outside its physical range, a name unusable in file names or used twice, a planar body given a
- *  vertical velocity, a mesh of an impossible size (1 mm .. 1 km) or too many steps (1e7);
+ *  scenario file's checks (README "Physical ranges"): DM_ERROR_ARGUMENT names the field of a
+ *  struct_size that is not a published size, a non-finite number (a fixed body's unused mass and
+ *  inertia included), a value outside its physical range, a name that is not UTF-8 text, unusable
+ *  in file names or used twice, a planar body given a vertical velocity, a mesh of an impossible
+ *  size (1 mm .. 1 km) or too many steps (1e7);
  *  DM_ERROR_INPUT a deformable mesh that encloses no volume, bodies overlapping deeply at the start
  *  or a step beyond the stable limit. Implausible values are warned in the summary. */
 DM_API dm_status dm_world_create(const dm_world_desc* world, const dm_body_desc* bodies, int32_t body_count, dm_world** out);
@@ -165,7 +184,8 @@ DM_API dm_status dm_world_create(const dm_world_desc* world, const dm_body_desc*
 DM_API dm_status dm_world_run(dm_world* w);
 
 /** One step; *finished is set nonzero once the run has ended. DM_ERROR_STATE for a finished or
- *  host-driven run. */
+ *  host-driven run (*finished still set), or while another call on the world runs (*finished not
+ *  touched). */
 DM_API dm_status dm_world_step(dm_world* w, int32_t* finished);
 
 DM_API int32_t dm_world_body_count(const dm_world* w); /**< -1 for a null world */
@@ -201,9 +221,13 @@ DM_API dm_status dm_world_summary_json(dm_world* w, const char** out_text);
 DM_API dm_status dm_world_copy_summary_json(dm_world* w, char* buffer, size_t size, size_t* needed);
 
 /** Writes the run's outputs (meshes, history.csv, report.html, summary.json) into `dir` (created when
- *  missing). DM_ERROR_IO when the folder cannot take them (not a folder, not writable, holding files
- *  no dymesh run wrote or another run's lock: the message names `dir` and why) or a write fails; a
- *  refused folder is left as it was. DM_ERROR_ARGUMENT for a null or empty `dir`. */
+ *  missing), replacing the files a previous dymesh run listed in the folder's manifest; other files
+ *  are left as they are. DM_ERROR_IO when the folder cannot take them (not a folder, not writable,
+ *  another run's lock, an output's name past the folder's name or path limit, or a file under an
+ *  output's name that no dymesh run wrote, that is not a regular file or that is one of the run's
+ *  inputs: the message names `dir` and the file) or a write fails; a refused folder is left as it
+ *  was. A write that fails partway leaves no summary.json (written last: its presence means the
+ *  files beside it are complete). DM_ERROR_ARGUMENT for a null or empty `dir`. */
 DM_API dm_status dm_world_write_outputs(dm_world* w, const char* dir);
 
 /** A hash of every body's final state (rigid state and vertices), equal at any thread count. */
@@ -218,7 +242,8 @@ DM_API void dm_world_destroy(dm_world* w);
  *  a finished run or one stepped in world mode. */
 DM_API dm_status dm_world_host_step(dm_world* w, const dm_body_state* states, int32_t count, double dt, dm_loads* out_loads);
 
-/** Ends a host-driven run with the states reached after the last step. */
+/** Ends a host-driven run with the states reached after the last step. DM_ERROR_STATE before the
+ *  first dm_world_host_step ("no host step taken"), for a finished run or one stepped in world mode. */
 DM_API dm_status dm_world_host_finish(dm_world* w, const dm_body_state* states, int32_t count);
 
 #ifdef __cplusplus

@@ -84,6 +84,11 @@ Vec3 SurfaceCentroid(const TriMesh& mesh);
 /// Reverses every triangle's winding (used when a closed mesh is wound inward).
 void FlipWinding(TriMesh* mesh);
 
+/// Winds every face outward: each patch of faces joined across edges two faces share takes the winding
+/// most of its faces have, the whole mesh faces out by its signed volume, and a closed patch by its own.
+/// Returns how many faces were wound unlike the rest (turned on their own).
+int OrientOutward(TriMesh* mesh);
+
 /// Removes zero-area triangles (returns how many).
 int RemoveDegenerateTriangles(TriMesh* mesh);
 

@@ -1,0 +1,119 @@
+// Winding every face outward: display meshes come with faces wound against their neighbours (the
+// p406 has 123 of 8,557, a forklift 2,982 of 22,638), and a face wound inward turns its normal into
+// the body, which the contact reads as the outside (spec §2: the master surface's outward normal).
+#include <algorithm>
+#include <tuple>
+#include <utility>
+
+#include "dymesh/core/mesh.h"
+
+namespace dymesh {
+namespace {
+
+// one use of an edge by a face: its corners as (lower, higher) index, and whether the face runs it upward
+struct EdgeUse {
+  int lo, hi, tri;
+  bool upward;
+  bool operator<(const EdgeUse& o) const { return std::tie(lo, hi, tri) < std::tie(o.lo, o.hi, o.tri); }
+};
+
+// faces across each edge exactly two faces share, and whether the pair runs it the same way (then one
+// of them is wound against the other); a face with an edge not shared by exactly two lies on an open patch
+struct FaceNeighbours {
+  std::vector<std::vector<std::pair<int, bool>>> across;
+  std::vector<char> open;
+};
+
+FaceNeighbours NeighboursOf(const TriMesh& mesh) {
+  const int n = static_cast<int>(mesh.triangles.size());
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * static_cast<std::size_t>(n));
+  for (int t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      uses.push_back({std::min(a, b), std::max(a, b), t, a < b});
+    }
+  std::sort(uses.begin(), uses.end());
+  FaceNeighbours f{std::vector<std::vector<std::pair<int, bool>>>(n), std::vector<char>(n, 0)};
+  for (std::size_t i = 0, j; i < uses.size(); i = j) {
+    for (j = i + 1; j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi;) ++j;
+    if (j - i != 2) {
+      for (std::size_t k = i; k < j; ++k) f.open[uses[k].tri] = 1;
+      continue;
+    }
+    const bool same = uses[i].upward == uses[i + 1].upward;
+    f.across[uses[i].tri].push_back({uses[i + 1].tri, same});
+    f.across[uses[i + 1].tri].push_back({uses[i].tri, same});
+  }
+  return f;
+}
+
+// six times the signed volume of the faces `patch` about the centre of their corners' bounds
+double PatchSixVolume(const TriMesh& mesh, const std::vector<int>& patch) {
+  PointBounds b;
+  for (int t : patch)
+    for (int v : mesh.triangles[t]) {
+      b.lo = b.lo.cwiseMin(mesh.vertices[v]);
+      b.hi = b.hi.cwiseMax(mesh.vertices[v]);
+    }
+  const Vec3 centre = 0.5 * (b.lo + b.hi);
+  double six_volume = 0.0;
+  for (int t : patch) {
+    const auto& tri = mesh.triangles[t];
+    six_volume += (mesh.vertices[tri[0]] - centre).dot((mesh.vertices[tri[1]] - centre).cross(mesh.vertices[tri[2]] - centre));
+  }
+  return six_volume;
+}
+
+// reverses the winding of `faces`, noting each turn in `turns`
+void TurnFaces(const std::vector<int>& faces, TriMesh* mesh, std::vector<char>* turns) {
+  for (int t : faces) {
+    std::swap(mesh->triangles[t][1], mesh->triangles[t][2]);
+    (*turns)[t] ^= 1;
+  }
+}
+
+}  // namespace
+
+int OrientOutward(TriMesh* mesh) {
+  const int n = static_cast<int>(mesh->triangles.size());
+  const FaceNeighbours f = NeighboursOf(*mesh);
+  // each patch (faces joined across edges two faces share), flooded from its lowest face: the faces
+  // wound against the flood's winding, and whether an edge of the patch is open or shared by more
+  std::vector<char> seen(n, 0), against(n, 0), turns(n, 0);
+  std::vector<std::vector<int>> closed_patches;
+  for (int seed = 0; seed < n; ++seed) {
+    if (seen[seed]) continue;
+    std::vector<int> patch{seed};
+    seen[seed] = 1;
+    bool closed = true;
+    for (std::size_t i = 0; i < patch.size(); ++i) {
+      const int t = patch[i];
+      closed = closed && !f.open[t];
+      for (const auto& [u, same] : f.across[t]) {
+        if (seen[u]) continue;
+        seen[u] = 1;
+        against[u] = static_cast<char>(against[t] != static_cast<char>(same));
+        patch.push_back(u);
+      }
+    }
+    // the patch keeps the winding most of its faces have (the seed's on a tie)
+    std::vector<int> minority;
+    const auto count = std::count_if(patch.begin(), patch.end(), [&](int t) { return against[t] != 0; });
+    const bool keep_flood = 2 * static_cast<std::size_t>(count) <= patch.size();
+    for (int t : patch)
+      if ((against[t] != 0) == keep_flood) minority.push_back(t);
+    TurnFaces(minority, mesh, &turns);
+    if (closed) closed_patches.push_back(std::move(patch));
+  }
+  // the whole mesh outward (open game shells too: the sign about the bounds centre decides)
+  if (SignedVolume(*mesh) < 0.0) FlipWinding(mesh);
+  // a closed patch (a wheel, a closed body) faces out by its own volume, whatever the rest does
+  for (const std::vector<int>& patch : closed_patches) {
+    if (PatchSixVolume(*mesh, patch) < 0.0) TurnFaces(patch, mesh, &turns);
+  }
+  // the faces that were wound unlike the rest: those turned on their own, not with the whole mesh
+  return static_cast<int>(std::count(turns.begin(), turns.end(), 1));
+}
+
+}  // namespace dymesh
