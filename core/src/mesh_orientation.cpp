@@ -2,6 +2,7 @@
 // p406 has 123 of 8,557, a forklift 2,982 of 22,638), and a face wound inward turns its normal into
 // the body, which the contact reads as the outside (spec §2: the master surface's outward normal).
 #include <algorithm>
+#include <array>
 #include <tuple>
 #include <utility>
 
@@ -17,10 +18,12 @@ struct EdgeUse {
   bool operator<(const EdgeUse& o) const { return std::tie(lo, hi, tri) < std::tie(o.lo, o.hi, o.tri); }
 };
 
-// faces across each edge exactly two faces share, and whether the pair runs it the same way (then one
-// of them is wound against the other); a face with an edge not shared by exactly two lies on an open patch
+// each face's neighbours across its edges two faces share (up to three, -1 for none), whether the pair
+// runs that edge the same way (then one of them is wound against the other), and whether the face has
+// an edge not shared by exactly two (it lies on an open patch)
 struct FaceNeighbours {
-  std::vector<std::vector<std::pair<int, bool>>> across;
+  std::vector<std::array<int, 3>> across;
+  std::vector<std::array<char, 3>> same;
   std::vector<char> open;
 };
 
@@ -34,7 +37,14 @@ FaceNeighbours NeighboursOf(const TriMesh& mesh) {
       uses.push_back({std::min(a, b), std::max(a, b), t, a < b});
     }
   std::sort(uses.begin(), uses.end());
-  FaceNeighbours f{std::vector<std::vector<std::pair<int, bool>>>(n), std::vector<char>(n, 0)};
+  FaceNeighbours f{std::vector<std::array<int, 3>>(n, {-1, -1, -1}), std::vector<std::array<char, 3>>(n, {0, 0, 0}),
+                   std::vector<char>(n, 0)};
+  auto link = [&](int t, int u, bool same) {
+    int k = 0;
+    while (f.across[t][k] >= 0) ++k;  // a face has three edges: at most three neighbours
+    f.across[t][k] = u;
+    f.same[t][k] = same ? 1 : 0;
+  };
   for (std::size_t i = 0, j; i < uses.size(); i = j) {
     for (j = i + 1; j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi;) ++j;
     if (j - i != 2) {
@@ -42,8 +52,8 @@ FaceNeighbours NeighboursOf(const TriMesh& mesh) {
       continue;
     }
     const bool same = uses[i].upward == uses[i + 1].upward;
-    f.across[uses[i].tri].push_back({uses[i + 1].tri, same});
-    f.across[uses[i + 1].tri].push_back({uses[i].tri, same});
+    link(uses[i].tri, uses[i + 1].tri, same);
+    link(uses[i + 1].tri, uses[i].tri, same);
   }
   return f;
 }
@@ -90,10 +100,11 @@ int OrientOutward(TriMesh* mesh) {
     for (std::size_t i = 0; i < patch.size(); ++i) {
       const int t = patch[i];
       closed = closed && !f.open[t];
-      for (const auto& [u, same] : f.across[t]) {
-        if (seen[u]) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int u = f.across[t][k];
+        if (u < 0 || seen[u]) continue;
         seen[u] = 1;
-        against[u] = static_cast<char>(against[t] != static_cast<char>(same));
+        against[u] = static_cast<char>(against[t] != f.same[t][k]);
         patch.push_back(u);
       }
     }
