@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -504,19 +505,21 @@ TEST(OrientOutward, TurnsFacesWoundAgainstTheirNeighboursAndInwardClosedParts) {
   // a box (2 x 1 x 1 m, 4 x 2 x 2 cells) with every third face wound inward: all outward again, the
   // same faces as the box's own, the turned ones counted
   const TriMesh box = MakeBox(2.0, 1.0, 1.0, 4, 2, 2);
+  const int third = static_cast<int>((box.triangles.size() + 2) / 3);
   TriMesh mixed = box;
   for (std::size_t t = 0; t < mixed.triangles.size(); t += 3) std::swap(mixed.triangles[t][1], mixed.triangles[t][2]);
   EXPECT_FALSE(WoundAlike(mixed));
-  EXPECT_EQ(OrientOutward(&mixed), static_cast<int>((box.triangles.size() + 2) / 3));
+  EXPECT_EQ(OrientOutward(&mixed), third);
   EXPECT_EQ(CanonicalFaces(mixed), CanonicalFaces(box));
-  // the whole box wound inward but a third of its faces: turned as a whole, the third on their own
+  // the whole box wound inward but a third of its faces: the third turned against their patch, then
+  // the whole mesh
   TriMesh inward = box;
   FlipWinding(&inward);
   for (std::size_t t = 0; t < inward.triangles.size(); t += 3) std::swap(inward.triangles[t][1], inward.triangles[t][2]);
-  EXPECT_EQ(OrientOutward(&inward), static_cast<int>((box.triangles.size() + 2) / 3));
+  EXPECT_EQ(OrientOutward(&inward), third);
   EXPECT_EQ(CanonicalFaces(inward), CanonicalFaces(box));
-  // a closed part wound inward inside an outward body (a wheel inside a car's shell): it faces out by
-  // its own volume, 8 + 1 m^3 in all
+  // a closed part wound inward inside an outward body (a wheel mirrored in modelling): it encloses its
+  // material, so it faces out by its own volume, 8 + 1 m^3 in all
   TriMesh two = MakeBox(4.0, 2.0, 1.0, 2, 2, 1);
   TriMesh part = MakeBox(1.0, 1.0, 1.0, 1, 1, 1);
   FlipWinding(&part);
@@ -526,12 +529,36 @@ TEST(OrientOutward, TurnsFacesWoundAgainstTheirNeighboursAndInwardClosedParts) {
   EXPECT_EQ(OrientOutward(&two), 12);
   EXPECT_NEAR(SignedVolume(two), 9.0, 1e-12);
   EXPECT_TRUE(WoundAlike(two));
+  // an open shell (the box without its top) with every other face wound inward, an even split no
+  // majority decides: wound out of the body by its volume about the centre, as the box's own faces
+  TriMesh open_box = box;
+  std::erase_if(open_box.triangles, [&](const std::array<int, 3>& t) {
+    return box.vertices[t[0]].z() > 0.49 && box.vertices[t[1]].z() > 0.49 && box.vertices[t[2]].z() > 0.49;
+  });
+  const TriMesh open_given = open_box;
+  for (std::size_t t = 0; t < open_box.triangles.size(); t += 2)
+    std::swap(open_box.triangles[t][1], open_box.triangles[t][2]);
+  OrientOutward(&open_box);
+  EXPECT_EQ(CanonicalFaces(open_box), CanonicalFaces(open_given));
   // an open sheet of two faces wound against each other keeps its first face's winding on the tie
   TriMesh sheet;
   sheet.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
   sheet.triangles = {{0, 1, 2}, {0, 3, 2}};
   EXPECT_EQ(OrientOutward(&sheet), 1);
   EXPECT_TRUE(WoundAlike(sheet));
+  // a Moebius strip of six faces cannot be wound one way: left as it came
+  TriMesh strip;
+  for (int k = 0; k < 3; ++k) {
+    const double a = 2.0 * 3.14159265358979 * k / 6.0, half = 0.5 * a;
+    for (double w : {-0.2, 0.2})
+      strip.vertices.emplace_back((1.0 + w * std::cos(half)) * std::cos(a), (1.0 + w * std::cos(half)) * std::sin(a), w * std::sin(half));
+  }
+  // three quads round the loop, the last joining the far end to the start turned over (0 <-> 1)
+  strip.triangles = {{0, 2, 3}, {0, 3, 1}, {2, 4, 5}, {2, 5, 3}, {4, 1, 0}, {4, 0, 5}};
+  TriMesh strip_given = strip;
+  EXPECT_EQ(OrientOutward(&strip), 0);
+  if (SignedVolume(strip_given) < 0.0) FlipWinding(&strip_given);  // the whole-mesh rule still applies
+  EXPECT_EQ(CanonicalFaces(strip), CanonicalFaces(strip_given));
   // a consistent outward mesh is left exactly as it was
   TriMesh same = box;
   EXPECT_EQ(OrientOutward(&same), 0);

@@ -84,9 +84,10 @@ Vec3 SurfaceCentroid(const TriMesh& mesh);
 /// Reverses every triangle's winding (used when a closed mesh is wound inward).
 void FlipWinding(TriMesh* mesh);
 
-/// Winds every face outward: each patch of faces joined across edges two faces share takes the winding
-/// most of its faces have, the whole mesh faces out by its signed volume, and a closed patch by its own.
-/// Returns how many faces were wound unlike the rest (turned on their own).
+/// Winds every face outward: each patch of faces joined across edges two faces share is wound alike, the
+/// way most of its faces are, then the whole mesh faces out by its signed volume, and a closed patch, or an
+/// open one whose faces were split near evenly, by its own (about the mesh's bounds centre). A patch that
+/// cannot be wound one way is left as it is. Returns how many faces were turned on their own.
 int OrientOutward(TriMesh* mesh);
 
 /// Removes zero-area triangles (returns how many).
