@@ -484,12 +484,22 @@ static void test_search_options(void) {
   CHECK(w == NULL);
 }
 
+/* a definition struct's size taken (`accepted`) or refused naming `field` and the two published sizes */
+static void check_size_verdict(dm_status status, int accepted, const char* field, size_t current, size_t first) {
+  if (accepted) {
+    CHECK(status == DM_OK);
+    return;
+  }
+  char sizes[96];
+  snprintf(sizes, sizeof sizes, "%zu (this header) or %zu", current, first);
+  CHECK(status == DM_ERROR_ARGUMENT && contains(dm_last_error(), field) && contains(dm_last_error(), sizes));
+}
+
 /* the published sizes of the definition structs (found by a sweep of the C ABI, 2026-11-28: a size past
    sizeof, or one ending partway through a field, was taken and the bytes beyond it ignored or half read) */
 static void test_struct_sizes(void) {
   car_and_wall s;
   make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
-  char sizes[64];
   dm_world* w = NULL;
   /* the world: this header's size and the first ABI's (before search_direction) are taken */
   unsigned char buffer[sizeof(dm_world_desc) + 16];
@@ -500,13 +510,8 @@ static void test_struct_sizes(void) {
     dm_world_desc desc = {.struct_size = world_sizes[k], .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
     memset(buffer, 0, sizeof buffer);
     memcpy(buffer, &desc, sizeof desc);
-    const dm_status status = dm_world_create((const dm_world_desc*)buffer, s.bodies, 2, &w);
-    if (k < 2) {
-      CHECK(status == DM_OK);
-    } else {
-      snprintf(sizes, sizeof sizes, "%zu (this header) or %zu", sizeof(dm_world_desc), offsetof(dm_world_desc, search_direction));
-      CHECK(status == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.struct_size: expected") && contains(dm_last_error(), sizes));
-    }
+    check_size_verdict(dm_world_create((const dm_world_desc*)buffer, s.bodies, 2, &w), k < 2, "world.struct_size: expected",
+                       sizeof(dm_world_desc), offsetof(dm_world_desc, search_direction));
     dm_world_destroy(w);
     w = NULL;
   }
@@ -523,13 +528,8 @@ static void test_struct_sizes(void) {
       b.struct_size = body_sizes[k];
       memcpy(packed + i * body_sizes[k], &b, body_sizes[k] < sizeof b ? body_sizes[k] : sizeof b);
     }
-    const dm_status status = dm_world_create(&desc, (const dm_body_desc*)packed, 2, &w);
-    if (k < 2) {
-      CHECK(status == DM_OK);
-    } else {
-      snprintf(sizes, sizeof sizes, "%zu (this header) or %zu", sizeof(dm_body_desc), offsetof(dm_body_desc, motion));
-      CHECK(status == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].struct_size: expected") && contains(dm_last_error(), sizes));
-    }
+    check_size_verdict(dm_world_create(&desc, (const dm_body_desc*)packed, 2, &w), k < 2, "bodies[0].struct_size: expected",
+                       sizeof(dm_body_desc), offsetof(dm_body_desc, motion));
     dm_world_destroy(w);
     w = NULL;
   }
