@@ -7,6 +7,7 @@
 #include "format.h"
 #include "placement_text.h"
 #include "dymesh/io/body_models.h"
+#include "dymesh/io/mesh_import.h"
 #include "dymesh/io/scenario_json.h"
 #include "dymesh/core/mesh.h"
 #include "dymesh/analysis/summary.h"
@@ -71,6 +72,13 @@ void PrintBody(const Scenario& scenario, int i, const BodyModel& model, double c
     out << "    note: " << duplicates << " duplicated faces (on the same three vertices as another; tolerated up to 10 % of the faces)\n";
   if (s.open_edges > 0)
     out << "    note: open mesh (edges used by only one triangle): usual for display meshes\n";
+  // the faces the build turned: counted again on the file's own welded mesh (the body's may be subdivided)
+  if (const std::string& file = scenario.bodies[i].mesh.file; !file.empty()) {
+    TriMesh as_filed = LoadMeshFile(file, "mesh.file");
+    if (const int turned = OrientOutward(&as_filed); turned > 0)
+      out << Format("    note: %d of the file's %zu faces are turned to face outward (wound against their neighbours, "
+                    "or in a closed part wound inward: README, Mesh checks)\n", turned, as_filed.triangles.size());
+  }
   // a vehicle is wider (y) than it is tall (z): a y-up mesh read without its axes lies on its side
   if (!scenario.bodies[i].mesh.file.empty() && scenario.bodies[i].motion != MotionModel::kFixed && size.z() > size.y())
     out << "    note: taller (z) than wide (y): if this is a vehicle lying on its side, set mesh.axes (a y-up mesh "

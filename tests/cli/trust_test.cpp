@@ -378,6 +378,35 @@ TEST_F(Trust, MeshOfDuplicatedFacesIsRefusedWithTheCount) {
   EXPECT_TRUE(Has(r.err, "doubled.obj: bodies[0].mesh: 12 duplicated faces")) << r.err;
 }
 
+// a cube with three of its twelve faces wound inward: turned at the build, which `check` notes, and the run
+// is the clean cube's (68th session: a face wound inward read its inside as the outside, unmarked)
+TEST_F(Trust, FacesWoundAgainstTheirNeighboursAreTurnedAndNoted) {
+  std::string mixed = BoxObj(1);
+  for (const char* face : {"f 1 3 2\n", "f 5 6 7\n", "f 2 3 7\n"}) {
+    const std::string flipped = std::string("f ") + face[2] + " " + face[6] + " " + face[4] + "\n";
+    mixed.replace(mixed.find(face), flipped.size(), flipped);
+  }
+  Write("mixed.obj", mixed);
+  Write("clean.obj", BoxObj(1));
+  const ProcessResult c = Dymesh({"check", Write("mixed.json", WithCarMesh("mixed.obj").dump())});
+  EXPECT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_TRUE(Has(c.out, "note: 3 of the file's 12 faces are turned to face outward")) << c.out;
+  const ProcessResult clean_check = Dymesh({"check", Write("clean.json", WithCarMesh("clean.obj").dump())});
+  EXPECT_FALSE(Has(clean_check.out, "turned to face outward")) << clean_check.out;
+  // (the cube stretched to the car's length, 180 in on a side, into a wall tall enough for its corners;
+  // coarse: the same warnings either way)
+  Json into_wall = WithCarMesh("mixed.obj");
+  into_wall["bodies"][1]["mesh"]["box"]["height"] = 400;
+  const int mixed_exit = Run(into_wall).exit_code;
+  const Json mixed_summary = Summary();
+  into_wall["bodies"][0]["mesh"]["file"] = "clean.obj";
+  EXPECT_EQ(Run(into_wall).exit_code, mixed_exit);
+  const Json clean_summary = Summary();
+  EXPECT_EQ(mixed_summary["bodies"][0]["delta_v"], clean_summary["bodies"][0]["delta_v"]);
+  EXPECT_EQ(mixed_summary["warnings"], clean_summary["warnings"]);
+  EXPECT_GT(clean_summary["bodies"][0]["delta_v"].get<double>(), 1.0);
+}
+
 // a mesh file's built size in the range of a generated box's (fuzzing, 2026-11-25: a car mesh scaled to
 // 4.6 um or to 457 m passed check with exit 0)
 TEST_F(Trust, MeshFileBodiesOfImpossibleSizeAreRefusedAndImplausibleOnesWarned) {
