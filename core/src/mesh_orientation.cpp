@@ -79,12 +79,9 @@ void TurnFaces(const std::vector<int>& faces, TriMesh* mesh, std::vector<char>* 
   }
 }
 
-// a patch's faces wound alike, and how to choose the way: kept to its faces' clear majority, or by volume
-// (a closed patch, or an open one whose faces were near evenly split)
-struct Patch {
-  std::vector<int> faces;
-  bool by_volume = false;
-};
+// the least share of a patch's faces wound the other way at which its majority says nothing: a quarter
+// (a forklift's body was 1,433 of 2,959 faces)
+constexpr double kNearEvenShare = 0.25;
 
 }  // namespace
 
@@ -95,14 +92,14 @@ int OrientOutward(TriMesh* mesh) {
   // wound against the flood's winding, whether it is closed, and whether two paths round a loop disagree
   // (a patch that cannot be wound one way, as a Moebius strip: the baja bug's body has 21 such edges)
   std::vector<char> seen(n, 0), against(n, 0), turns(n, 0);
-  std::vector<Patch> by_volume;
+  std::vector<std::vector<int>> by_volume;  // the patches their volume decides (below)
   for (int seed = 0; seed < n; ++seed) {
     if (seen[seed]) continue;
-    Patch patch{{seed}};
+    std::vector<int> patch{seed};
     seen[seed] = 1;
     bool orientable = true, closed = true;
-    for (std::size_t i = 0; i < patch.faces.size(); ++i) {
-      const int t = patch.faces[i];
+    for (std::size_t i = 0; i < patch.size(); ++i) {
+      const int t = patch[i];
       closed = closed && !f.open[t];
       for (int k = 0; k < 3; ++k) {
         const int u = f.across[t][k];
@@ -114,30 +111,29 @@ int OrientOutward(TriMesh* mesh) {
         }
         seen[u] = 1;
         against[u] = wound;
-        patch.faces.push_back(u);
+        patch.push_back(u);
       }
     }
     if (!orientable) continue;  // no winding to restore: left as it came
     // wound alike, the way most of its faces are
     std::vector<int> minority;
-    const auto count = std::count_if(patch.faces.begin(), patch.faces.end(), [&](int t) { return against[t] != 0; });
-    const bool keep_flood = 2 * static_cast<std::size_t>(count) <= patch.faces.size();
-    for (int t : patch.faces)
+    const auto count = std::count_if(patch.begin(), patch.end(), [&](int t) { return against[t] != 0; });
+    const bool keep_flood = 2 * static_cast<std::size_t>(count) <= patch.size();
+    for (int t : patch)
       if ((against[t] != 0) == keep_flood) minority.push_back(t);
     TurnFaces(minority, mesh, &turns);
     // a closed patch encloses its material: its own volume decides. So does an open one whose faces were
-    // split near evenly (a quarter or more each way: a forklift's body was 1,433 of 2,959), where a
-    // majority says nothing
-    patch.by_volume = closed || 4 * minority.size() >= patch.faces.size();
-    if (patch.by_volume) by_volume.push_back(std::move(patch));
+    // split near evenly, where a majority says nothing
+    const bool near_even = static_cast<double>(minority.size()) >= kNearEvenShare * static_cast<double>(patch.size());
+    if (closed || near_even) by_volume.push_back(std::move(patch));
   }
   // the whole mesh outward (open game shells too: the sign about the bounds centre decides)
   if (SignedVolume(*mesh) < 0.0) FlipWinding(mesh);
   // then each patch decided by volume: about the mesh's bounds centre, which for a closed patch is its own
   const PointBounds b = BoundsOf(mesh->vertices);
   const Vec3 centre = 0.5 * (b.lo + b.hi);
-  for (const Patch& patch : by_volume)
-    if (PatchSixVolume(*mesh, patch.faces, centre) < 0.0) TurnFaces(patch.faces, mesh, &turns);
+  for (const std::vector<int>& patch : by_volume)
+    if (PatchSixVolume(*mesh, patch, centre) < 0.0) TurnFaces(patch, mesh, &turns);
   // the faces turned on their own, not with the whole mesh
   return static_cast<int>(std::count(turns.begin(), turns.end(), 1));
 }

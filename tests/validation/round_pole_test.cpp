@@ -216,9 +216,13 @@ TEST(RoundPole, CrushDeeperThanThePoleCameIsMarked) {
     // with the velocity search the crush stays within the pole's reach since the faces the p406 had wound
     // inward are turned (68th session: 1 of the 8 at 3.5 in beyond; 7 or 8 of the 8 marked before); the
     // polygon-normal search still tips the stretched faces past it (12-26 in), which exercises the marking;
-    // delta-V stands (an ensemble keeps the sample)
-    if (search == SearchDirection::kVelocity) EXPECT_LE(beyond, 2);
-    if (search == SearchDirection::kPolyNormal) EXPECT_GT(beyond, 0);
+    // delta-V stands (an ensemble keeps the sample). The bar, 2 of 8: the measured 1 and one more, as each
+    // start is a draw of the contact's branch (0.001 in moves); 7 or 8, as before, fail it
+    if (search == SearchDirection::kVelocity) {
+      EXPECT_LE(beyond, 2);
+    } else {
+      EXPECT_GT(beyond, 0);
+    }
   }
   EXPECT_FALSE(WarningVoidsResults("crush_beyond_reach"));
 }
