@@ -97,7 +97,6 @@ ContactEngine::ContactEngine(std::vector<std::shared_ptr<const BodyModel>> model
   chunk_max_.resize(n);
   for (int i = 0; i < n; ++i) InitBounds(i);
   engaged_.resize(static_cast<size_t>(n) * n);
-  held_.assign(static_cast<size_t>(n) * n, 0);
   pushed_.assign(static_cast<size_t>(n) * n, Vec3::Zero());
   pending_delta_.resize(n);
   moved_.resize(n);
@@ -179,9 +178,7 @@ StepResult ContactEngine::Step(double dt) {
   // every pair whose bounds overlap, in the bodies' own order (determinism: fixed pair order)
   for (const auto& [a, b] : pair_order_) {
     const size_t ab = static_cast<size_t>(a) * n + b, ba = static_cast<size_t>(b) * n + a;
-    char& held = held_[ab];
     if ((models_[a]->rigid && models_[b]->rigid) || !BoundsOverlap(a, b)) {
-      held = 0;
       pushed_[ab] = pushed_[ba] = Vec3::Zero();
       continue;
     }
@@ -226,7 +223,7 @@ StepResult ContactEngine::Step(double dt) {
     const Vec3 on_a = result.pairs.back().normal_force[0] * dt;
     pushed_[ab] += states_[b].rigid.Rotation().transpose() * on_a;
     pushed_[ba] -= states_[a].rigid.Rotation().transpose() * on_a;
-    PairFriction(sums, weights, dt, &held, &result.pairs.back());
+    PairFriction(sums, weights, dt, &result.pairs.back());
   }
   // spec §8 SumForcesMoments: resultants at each CG in the body frame
   std::vector<Vec3> force_earth(n, Vec3::Zero()), moment_earth(n, Vec3::Zero());
@@ -411,7 +408,7 @@ void ContactEngine::ProcessNode(const PassFrame& f, int v, Engagement engagement
   const Vec3 normal_earth = f.r_master * hit.normal;
   out->sums.normal.Add(node_force * normal_earth, arm_slave, arm_master);
   // spec §7 SlaveNodeFriction acts here, mu times the normal force (its direction once the pair's
-  // normal loads are known: AddFriction); spec §6 the loading force ends where the approach does
+  // normal loads are known: PairFriction); spec §6 the loading force ends where the approach does
   // (EndApproachWithinStep)
   if (f.mu > 0.0 || options_.turn_within_step)
     out->points.push_back({arm_slave, arm_master, normal_earth, node_force, turn_force});

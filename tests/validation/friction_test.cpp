@@ -184,10 +184,13 @@ void RunHostLoop(const Scenario& scenario, const StepCheck& check) {
 // the pair's normal loads (which drive the slide within the step), acting on the bodies as the host
 // moves them, leave no motion against which the friction would push the other way (its power on the
 // step-end motion is not positive). The offset pole holds the car's front with mu 0.5: mu N
-// (15,000 lbf) used to reverse the slide within one step
+// (15,000 lbf) used to reverse the slide within one step. Counted: steps where friction held the
+// slide, taking more than half of it (its power on the step-end motion under half that on the motion
+// without it; a point damped under the null band keeps about a third, one sliding at mu N most of it)
 TEST(Friction, StopsASlideWithoutReversingIt) {
   const Scenario s = LoadScenario(std::string(DYMESH_DATA_DIR) + "/scenarios/pole_offset.json");
-  int limited = 0;
+  constexpr double kHeld = 0.5;
+  int held = 0;
   RunHostLoop(s, [&](const ContactEngine& engine, const StepResult& r, const std::vector<RigidState>& before) {
     for (const PairLoads& p : r.pairs) {
       double power_trial = 0.0, power_after = 0.0, scale = 0.0;  // [W]
@@ -208,11 +211,11 @@ TEST(Friction, StopsASlideWithoutReversingIt) {
       }
       // round-off of the power sums: 1e-9 of their terms
       EXPECT_LE(power_after, 1e-9 * scale);
-      if (power_trial < 0.0 && std::abs(power_after) <= 1e-9 * scale) ++limited;
+      if (power_trial < 0.0 && power_after >= kHeld * power_trial) ++held;
     }
   });
-  EXPECT_GT(limited, 10);  // the limit really acts on this run
-  std::printf("[measured] pole_offset.json: friction limited to stopping the slide on %d steps\n", limited);
+  EXPECT_GT(held, 10);  // friction really stops the slide on this run
+  std::printf("[measured] pole_offset.json: friction held the slide on %d steps\n", held);
 }
 
 // friction that has slowed or stopped a slide holds it: the spec's null band (no friction below

@@ -191,11 +191,13 @@ TEST(ObstacleInside, PoleTheBoxCrushedAroundIsNotMarked) {
 // far the cube's centre went past the box's back face (where it comes in), at any recorded state with
 // the centre inside the box's rest shape, beyond the box's deepest crush within 10 in across that line
 // (the cube's width: the crush the cube itself could have made). The bar is the search's reach, as for
-// the pole above. At 80 mph turned 10 deg the cube goes through the box's faces and leaves by its side;
-// at 20 mph it stops 10 in into the box and bounces back (e 0.10 of 0.1). (At 80 mph unturned, the
-// crater's nodes slide off the cube's faces and it drifts on inside the box after the pulse, at 0.2-0.5
-// mph: unmarked; with a first law of the turn within the step at 2.4 mph, 27 in past the crush by the
-// end, marked; at 50-70 mph, or turned 30 deg, it is marked: Known limits)
+// the pole above. At 90 mph turned 10 deg the cube goes through the box's faces, 172 in past the crush
+// (80 mph did until friction was read against the slide it leaves, 69th session: the crater now holds
+// the cube 3.8 in short of its crush at 70-80 mph, turned 0-30 deg, and lets it through at 90, 156-172
+// in); at 20 mph it stops 10 in into the box and bounces back (e 0.10 of 0.1). (Before: at 80 mph
+// unturned, the crater's nodes slid off the cube's faces and it drifted on inside the box after the
+// pulse, at 0.2-0.5 mph, unmarked; with a first law of the turn within the step at 2.4 mph, 27 in past
+// the crush by the end, marked; at 50-70 mph, or turned 30 deg, it was marked: Known limits)
 struct CubeRun {
   double inside_beyond_crush = -INFINITY;  // [in]
   bool inside = false, voided = false;
@@ -249,7 +251,7 @@ CubeRun RunCubeIntoBox(double heading, double speed) {
 }
 
 TEST(ObstacleInside, DeformableBodyThroughAnotherIsMarked) {
-  const CubeRun through = RunCubeIntoBox(10.0, 80.0);
+  const CubeRun through = RunCubeIntoBox(10.0, 90.0);
   ASSERT_GT(through.inside_beyond_crush, kReach);  // the case: through the faces, past the search's reach
   EXPECT_TRUE(through.inside);
   EXPECT_TRUE(through.voided);

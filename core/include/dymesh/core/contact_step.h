@@ -179,19 +179,12 @@ class ContactEngine {
   PairLoads CombinePasses(int a, int b, const std::vector<PassSums>& sums, const std::vector<double>& weights,
                           const PassSums& rigid_nodes) const;
   // spec §7 the pair's friction (contact_friction.cpp): at its passes' friction points, weighted like
-  // its normal load, with the null band and Coulomb's bound; *held: the last step left the slide
-  // under the band, and on return whether this one does
-  void PairFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights, double dt, char* held,
+  // its normal load, against each point's slide at the step's end, at most mu N, fading under the null
+  // band
+  void PairFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights, double dt,
                     PairLoads* pair) const;
   // the pair's two bodies moved over dt by its normal loads alone
   std::array<RigidState, 2> TrialMotion(const PairLoads& pair, double dt) const;
-  // adds the friction of the points that slide faster than `min_slide` [m/s] on the trial motion;
-  // returns their sum of mu N [N]
-  double AddFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights,
-                     const std::array<RigidState, 2>& trial, double min_slide, PairLoads* pair) const;
-  // Coulomb's bound: never more than stops the slide; true when the friction leaves the slide under
-  // the band (held in the next step)
-  bool LimitFriction(double dt, double magnitude, const std::array<RigidState, 2>& trial, PairLoads* pair) const;
   // spec §6 (contact_turn.cpp): in the step in which the approach at a touching node ends, its loading
   // force acts over the part of the step it closes, its turn force throughout (each point's
   // closing_part, from its normal velocity at the step's start and on the pair's trial motion under
@@ -264,7 +257,6 @@ class ContactEngine {
   std::vector<std::vector<Vec3>> chunk_min_, chunk_max_;  // [m] the same per fixed chunk of vertices
   std::vector<std::array<int, 2>> pair_order_;  // every pair (a < b) in the order a step visits them
   std::vector<std::array<EngagedNodes, 2>> engaged_;  // per pair (a<b): nodes of a, of b engaged with the other
-  std::vector<char> held_;  // per pair (a<b): friction left the slide under the null band in the last step
   // per ordered pair (slave * n + master): the normal impulse the master gave the slave in this
   // contact, master frame [N s]; cleared when the pair's bounds part
   std::vector<Vec3> pushed_;
