@@ -97,18 +97,59 @@ double ContactEngine::PairPower(const PairLoads& p, const Vec3 (&force)[2], cons
   return power;
 }
 
+double ContactEngine::PointDamping(double mu, const PairRates& reference, int slave_side, const ContactPoint& q) const {
+  const double slide = AlongSurface(RelativeVelocityAt(reference, slave_side, q), q.normal).norm();
+  return mu * q.Carried() / std::max({slide, options_.friction_null_band, kLeastSlide});
+}
+
+Mat12 ContactEngine::FrictionDampers(const std::vector<PassSums>& sums, const std::vector<double>& weights,
+                                     const PairLoads& pair, double mu, const PairRates& reference,
+                                     int lead_side) const {
+  // each point damps its slide in the two directions across its normal
+  Mat12 damping = Mat12::Zero();
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    const int ks = sums[i].slave == pair.body[0] ? 0 : 1, slot = ks == lead_side ? 0 : 1;
+    for (const ContactPoint& q : sums[i].points) {
+      const double c = weights[i] * PointDamping(mu, reference, ks, q);
+      if (!(c > 0.0)) continue;
+      const Vec3 t1 = q.normal.unitOrthogonal(), t2 = q.normal.cross(t1);
+      const Row12 g1 = SlideRow(t1, slot, q.arm_slave, q.arm_master);
+      const Row12 g2 = SlideRow(t2, slot, q.arm_slave, q.arm_master);
+      damping.noalias() += c * (g1.transpose() * g1 + g2.transpose() * g2);
+    }
+  }
+  return damping;
+}
+
+void ContactEngine::AddDamperFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights,
+                                      double mu, const PairRates& reference, const PairRates& after,
+                                      PairLoads* p) const {
+  // determinism: summed per pass in node order, weighted like the normal loads
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    const int ks = sums[i].slave == p->body[0] ? 0 : 1;
+    Wrench friction;
+    for (const ContactPoint& q : sums[i].points) {
+      const double c = PointDamping(mu, reference, ks, q), limit = mu * q.Carried();
+      if (!(c > 0.0)) continue;
+      Vec3 force = -c * AlongSurface(RelativeVelocityAt(after, ks, q), q.normal);
+      if (force.norm() > limit) force *= limit / force.norm();
+      friction.Add(force, q.arm_slave, q.arm_master);
+    }
+    friction.AddToPair(weights[i], ks, p->friction_force, p->friction_moment);
+  }
+}
+
 void ContactEngine::PairFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights, double dt,
                                  PairLoads* p) const {
   // spec §7 SlaveNodeFriction: mu N at each point against its slide at the end of the step, the slide
-  // the friction itself leaves (backward Euler: friction read from the slide the normal loads leave
-  // overshot a stopped slide and pushed it back the other way the next step, alternating mu N and
-  // about half of it: a box into another's side at 30 mph, mu 0.5, peaked 4.6 % higher at the 0.5 ms
-  // step than at a sixteenth of it and alternated by 5-7 % of the peak; now 1 % and under 1 %).
-  // Each point is a damper of mu N over its slide on the trial motion (under the normal loads), at
-  // least the null band: sliding, mu N; a slide under the band (the spec's: no spurious force when
-  // the surfaces barely slide) fades with it. The pair's rates at the step's end solve the dampers
-  // with the bodies' mobilities, a 12 x 12 system; the dampers dissipate, so friction never reverses
-  // a slide, and each point's force is bounded by mu N
+  // the friction itself leaves (backward Euler: read against the slide the normal loads leave, it
+  // overshot a stopped slide and pushed it back the next step, alternating between mu N and about
+  // half of it: a box into another's side at 30 mph, mu 0.5, alternated by 4-6 % of the peak force
+  // and its peak fell 4.6 / 9.5 % at dt/2, dt/4; now under 1 % and 0.3 %). Each point is a damper of
+  // mu N over its slide, read at no less than the null band: sliding, mu N; a slide under the band
+  // (the spec's: no spurious force where the surfaces barely slide) takes friction in proportion. The
+  // pair's rates at the step's end solve the dampers with the bodies' mobilities, a 12 x 12 system;
+  // the dampers dissipate, so friction never reverses a slide; each point's force is at most mu N
   ClearFriction(p);
   const double mu = 0.5 * (models_[p->body[0]]->friction + models_[p->body[1]]->friction);
   if (!(mu > 0.0)) return;
@@ -116,11 +157,6 @@ void ContactEngine::PairFriction(const std::vector<PassSums>& sums, const std::v
   // determinism: the bodies take the slots in an order they set, not their listing
   const int lead = LeadSlave(p->body[0], p->body[1]) == p->body[0] ? 0 : 1;
   auto slot = [lead](int side) { return side == lead ? 0 : 1; };
-  // each point's damping: mu N over its slide on the `reference` motion, at least the null band
-  auto damping_of = [&](const PairRates& reference, int side, const ContactPoint& q) {
-    const double slide = AlongSurface(RelativeVelocityAt(reference, side, q), q.normal).norm();
-    return mu * q.Carried() / std::max({slide, options_.friction_null_band, kLeastSlide});
-  };
   // the bodies' mobilities and the rates the normal loads leave
   Mat12 mobility = Mat12::Zero();
   Vec12 rates;
@@ -134,44 +170,17 @@ void ContactEngine::PairFriction(const std::vector<PassSums>& sums, const std::v
   // damper then gives mu N at its slide at the step's end to the square of the step's change in it:
   // read once, the sliding box's friction impulse fell 0.5 % short at the 0.5 ms step)
   PairRates reference = trial, after = trial;
-  for (int round = 0; round < kDamperReadings; ++round) {
-    if (round > 0) reference = after;
-    // the dampers on the pair's rates (in the slide's two directions across the normal), each pass's
-    // weighted like its normal loads (its estimate of the interface)
-    Mat12 damping = Mat12::Zero();
-    for (std::size_t i = 0; i < sums.size(); ++i) {
-      const int ks = sums[i].slave == p->body[0] ? 0 : 1;
-      for (const ContactPoint& q : sums[i].points) {
-        const double c = weights[i] * damping_of(reference, ks, q);
-        if (!(c > 0.0)) continue;
-        const Vec3 t1 = q.normal.unitOrthogonal(), t2 = q.normal.cross(t1);
-        const Row12 g1 = SlideRow(t1, slot(ks), q.arm_slave, q.arm_master);
-        const Row12 g2 = SlideRow(t2, slot(ks), q.arm_slave, q.arm_master);
-        damping.noalias() += c * (g1.transpose() * g1 + g2.transpose() * g2);
-      }
-    }
-    // the rates at the step's end: r = r_trial + dt M (-C r)
+  for (int reading = 0; reading < kDamperReadings; ++reading) {
+    if (reading > 0) reference = after;
+    const Mat12 damping = FrictionDampers(sums, weights, *p, mu, reference, lead);
+    // the rates at the step's end: r = r_trial - dt M C r
     const Vec12 end = (Mat12::Identity() + dt * mobility * damping).partialPivLu().solve(rates);
     for (int k = 0; k < 2; ++k) {
       after.velocity[k] = end.segment<3>(6 * slot(k));
       after.spin[k] = end.segment<3>(6 * slot(k) + 3);
     }
   }
-  // each point's friction against its slide at the step's end, at most mu N; summed per pass in node
-  // order and weighted like the normal loads
-  for (std::size_t i = 0; i < sums.size(); ++i) {
-    const int ks = sums[i].slave == p->body[0] ? 0 : 1;
-    Wrench friction;
-    for (const ContactPoint& q : sums[i].points) {
-      const double c = damping_of(reference, ks, q);
-      if (!(c > 0.0)) continue;
-      const double limit = mu * q.Carried();
-      Vec3 force = -c * AlongSurface(RelativeVelocityAt(after, ks, q), q.normal);
-      if (force.norm() > limit) force *= limit / force.norm();
-      friction.Add(force, q.arm_slave, q.arm_master);
-    }
-    friction.AddToPair(weights[i], ks, p->friction_force, p->friction_moment);
-  }
+  AddDamperFriction(sums, weights, mu, reference, after, p);
 }
 
 }  // namespace dymesh

@@ -112,8 +112,8 @@ TEST(Pulse, OffsetPoleDoesNotChatterOnAFinerMeshMorePassesOtherOrderTurnedFrame)
 // it alternated between about mu N and half of it, by 6.0 / 5.5 / 4.1 % of the peak at dt, dt/2 and
 // dt/4, and the peak fell 4.6 % at dt/2 and 9.5 % at dt/4 (69th session, before friction was read
 // against the slide it leaves). Known answer: the converged pulse. Its peak at dt/2 and dt/4 within
-// 2 % of dt's (the bar; measured -0.75 and +0.19 %) and no alternation over 2 % of it
-// (measured 0.2-1.1 %)
+// 2 % of dt's (the bar; measured +0.29 and +0.32 %) and no alternation over 2 % of it
+// (measured 0.5-0.9 %)
 TEST(Pulse, FrictionalSideImpactOfBoxesConvergesInTheStep) {
   Scenario s;
   s.file = "(frictional side impact)";

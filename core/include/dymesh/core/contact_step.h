@@ -202,6 +202,17 @@ class ContactEngine {
   // the power of loads on a pair's bodies on the trial motion [W] (rates at the step's start pose)
   double PairPower(const PairLoads& pair, const Vec3 (&force)[2], const Vec3 (&moment)[2],
                    const std::array<RigidState, 2>& trial) const;
+  // spec §7 (contact_friction.cpp) a friction point's damper [N s/m]: mu N over its slide on the
+  // `reference` rates, read at no less than the null band
+  double PointDamping(double mu, const PairRates& reference, int slave_side, const ContactPoint& q) const;
+  // the pair's friction points' dampers on its rates (slot 0 the body `lead_side`, each slot's velocity
+  // then spin), each pass's weighted like its normal loads
+  Eigen::Matrix<double, 12, 12> FrictionDampers(const std::vector<PassSums>& sums, const std::vector<double>& weights,
+                                                const PairLoads& pair, double mu, const PairRates& reference,
+                                                int lead_side) const;
+  // each point's damper times its slide on the rates `after`, at most mu N, onto the pair's friction
+  void AddDamperFriction(const std::vector<PassSums>& sums, const std::vector<double>& weights, double mu,
+                         const PairRates& reference, const PairRates& after, PairLoads* pair) const;
   Vec3 SearchLine(const PassFrame& f, int v, const Vec3& v_rel, const Vec3& inward) const;
   // `along`: a search direction (master frame) instead of the method's, or null
   bool LocateNode(const PassFrame& f, int v, bool was_touching, const Vec3* along, std::vector<Candidate>* scratch,
