@@ -11,7 +11,6 @@
 namespace dymesh {
 namespace {
 
-using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Mat12 = Eigen::Matrix<double, 12, 12>;
 using Vec12 = Eigen::Matrix<double, 12, 1>;
 using Row12 = Eigen::Matrix<double, 1, 12>;
@@ -25,24 +24,6 @@ constexpr int kDamperReadings = 2;
 // no friction on either body of the pair
 void ClearFriction(PairLoads* p) {
   for (int k = 0; k < 2; ++k) p->friction_force[k] = p->friction_moment[k] = Vec3::Zero();
-}
-
-// the rates (velocity, spin; earth frame) a body gains over unit time from rest under a unit force or
-// moment (earth frame): the host's own response, so a planar or fixed body keeps to its axes
-Mat6 Mobility(const BodyModel& model, MotionModel motion, const RigidState& state) {
-  Mat6 m = Mat6::Zero();
-  const Mat3 r = state.Rotation();
-  for (int c = 0; c < 6; ++c) {
-    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
-    (c < 3 ? force : moment)[c % 3] = 1.0;
-    RigidState still = state;
-    still.velocity = Vec3::Zero();
-    still.omega = Vec3::Zero();
-    IntegrateRigidBody(model, motion, force, r.transpose() * moment, 1.0, &still);
-    m.block<3, 1>(0, c) = still.velocity;
-    m.block<3, 1>(3, c) = r * still.omega;
-  }
-  return m;
 }
 
 // the row taking the pair's rates (slot 0's velocity and spin, then slot 1's) to the slave point's

@@ -56,15 +56,21 @@ void IntegrateRigidBody(const BodyModel& model, MotionModel motion, const Vec3& 
   s->yaw += rates.z() * dt;
 }
 
-double LoadPowerGain(const BodyModel& model, MotionModel motion, const RigidState& state, const Vec3& force_earth,
-                     const Vec3& moment_earth) {
-  // the host's own step over unit time from rest (no gyroscopic term) gives the load's accelerations
+Eigen::Matrix<double, 6, 6> Mobility(const BodyModel& model, MotionModel motion, const RigidState& state) {
+  // the host's own step over unit time from rest (no gyroscopic term) under each unit load
+  Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
   const Mat3 r = state.Rotation();
-  RigidState still = state;
-  still.velocity = Vec3::Zero();
-  still.omega = Vec3::Zero();
-  IntegrateRigidBody(model, motion, force_earth, r.transpose() * moment_earth, 1.0, &still);
-  return force_earth.dot(still.velocity) + moment_earth.dot(r * still.omega);
+  for (int c = 0; c < 6; ++c) {
+    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+    (c < 3 ? force : moment)[c % 3] = 1.0;
+    RigidState still = state;
+    still.velocity = Vec3::Zero();
+    still.omega = Vec3::Zero();
+    IntegrateRigidBody(model, motion, force, r.transpose() * moment, 1.0, &still);
+    m.block<3, 1>(0, c) = still.velocity;
+    m.block<3, 1>(3, c) = r * still.omega;
+  }
+  return m;
 }
 
 double KineticEnergy(const BodyModel& model, const RigidState& s) {

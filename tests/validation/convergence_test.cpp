@@ -209,7 +209,7 @@ Outcome Mean(const std::vector<Outcome>& runs) {
 TEST(Convergence, SideImpactDemo) { ExpectConverged("car_to_car_side.json", 0.5); }
 // the bar: the shipped vehicles at 45 degrees and 35 mph part within 0.5 s (they stayed
 // together past 0.8 s while a door's inner panel, crushed past by the outer one, caught the
-// withdrawing p406). Whether they do is a draw (ObliqueBandParts, below): held on a band of starts
+// withdrawing p406). Whether they do is a draw (ExpectObliqueBandParts, below): held on a band of starts
 TEST(Convergence, Oblique45Degrees) { ExpectConverged("car_to_car_oblique.json"); }
 
 // the oblique's parting is a draw: over 16 starts -0.01 to +0.01 in sideways the collision ends

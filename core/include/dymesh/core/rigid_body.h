@@ -39,11 +39,10 @@ ExternalLoads MotionModelLoads(MotionModel motion, const BodyModel& model, const
 void IntegrateRigidBody(const BodyModel& model, MotionModel motion, const Vec3& force_earth,
                         const Vec3& moment_body, double dt, RigidState* state);
 
-/// Rate at which a load's own velocity change raises its power [W/s]: F·dv/dt + M·dw/dt for the
-/// acceleration the host gives the body under that load alone (F earth, M about the CG in the earth
-/// frame; zero for a fixed or massless body, the planar host's axes only).
-double LoadPowerGain(const BodyModel& model, MotionModel motion, const RigidState& state, const Vec3& force_earth,
-                     const Vec3& moment_earth);
+/// The body's mobility: the velocity and spin (earth frame) the host gives it over unit time from rest
+/// under a unit force or moment (earth frame, about the CG); columns force x, y, z, then moment x, y,
+/// z. Zero for a fixed or massless body; the planar host's axes only.
+Eigen::Matrix<double, 6, 6> Mobility(const BodyModel& model, MotionModel motion, const RigidState& state);
 
 /// Kinetic energy [J], translational plus rotational.
 double KineticEnergy(const BodyModel& model, const RigidState& state);
