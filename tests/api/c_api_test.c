@@ -164,10 +164,20 @@ static void make_car_and_wall(car_and_wall* s, dm_body_state car, double wall_x,
                                 0.1, 0.0, 1, 1, {{wall_x, 0, 0}, 0, 0, 0, {0, 0, 0}, {0, 0, 0}}, DM_MOTION_DEFAULT};
 }
 
-/* the box car at 13.4 m/s, 1 cm before the wall (0.5 ms steps, 0.3 s, stop at separation): a new world */
-static dm_world* car_into_wall(car_and_wall* s) {
+/* the box car at 13.4 m/s, 1 cm before the wall */
+static void make_car_at_wall(car_and_wall* s) {
   make_car_and_wall(s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
-  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+}
+
+/* the world the car-and-wall tests run in: 0.5 ms steps, 0.3 s, stop at separation, 2 passes */
+static dm_world_desc wall_run_desc(void) {
+  return (dm_world_desc){.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+}
+
+/* the box car at the wall (make_car_at_wall, wall_run_desc): a new world */
+static dm_world* car_into_wall(car_and_wall* s) {
+  make_car_at_wall(s);
+  dm_world_desc desc = wall_run_desc();
   dm_world* w = NULL;
   CHECK(dm_world_create(&desc, s->bodies, 2, &w) == DM_OK);
   return w;
@@ -179,15 +189,14 @@ static void test_winding(void) {
   uint64_t reference = 0;
   for (int variant = 0; variant < 3; ++variant) {
     car_and_wall s;
-    make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+    make_car_at_wall(&s);
     for (int t = 0; t < 12; ++t)
       if (variant == 2 || (variant == 1 && t == 0)) {
         const int32_t corner = s.car_t[3 * t + 1];
         s.car_t[3 * t + 1] = s.car_t[3 * t + 2];
         s.car_t[3 * t + 2] = corner;
       }
-    dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3,
-                          .stop_at_separation = 1, .passes_per_step = 2};
+    dm_world_desc desc = wall_run_desc();
     dm_world* w = NULL;
     CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_OK);
     if (!w) return;
@@ -283,7 +292,7 @@ static void test_motion(void) {
   bad[1] = bad[0];
   bad[1].name = "b";
   bad[1].initial.position[0] = 5.0;
-  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+  dm_world_desc desc = wall_run_desc();
   dm_world* w = NULL;
   CHECK(dm_world_create(&desc, bad, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].motion"));
   bad[0].motion = DM_MOTION_DEFAULT;
@@ -302,15 +311,14 @@ static void test_motion(void) {
    each of these was accepted, or crashed) */
 static void test_create_checks(void) {
   car_and_wall s;
-  const dm_body_state moving = {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}};
-  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+  dm_world_desc desc = wall_run_desc();
   dm_world* w = NULL;
   /* a struct_size far beyond any dm_body_desc was taken as the stride and read past the array */
-  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   s.bodies[0].struct_size = s.bodies[1].struct_size = (size_t)1 << 40;
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].struct_size"));
   /* names become output file names: a path or a name used twice would write outside or overwrite */
-  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   s.bodies[0].name = "../escaped";
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].name: expected a name usable in file names"));
   s.bodies[0].name = "wall";
@@ -319,7 +327,7 @@ static void test_create_checks(void) {
   make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 5.0}, {0, 0, 0}}, 2.76, DM_MOTION_PLANAR);
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].initial.velocity[2]: a planar body holds its height"));
   /* values outside their physical ranges (README "Physical ranges") */
-  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   s.bodies[0].mass = 1e300;
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].mass: expected a physically possible mass"));
   s.bodies[0].mass = 1500.0;
@@ -335,13 +343,13 @@ static void test_create_checks(void) {
   s.bodies[0].initial.yaw = 1e300;
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].initial.yaw"));
   /* a mesh of no size, and a deformable one that encloses no volume (a flat box) */
-  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   for (int k = 0; k < 24; ++k) s.car_v[k] = 0.25;
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].vertices: expected a physically possible body size"));
   make_box(4.5, 1.7, 0.0, s.car_v, s.car_t);
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_INPUT && contains(dm_last_error(), "must enclose a volume"));
   /* a run of a billion steps would fill the memory with its history */
-  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   desc.duration = 1e9;
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.duration"));
   desc.duration = 1e3;
@@ -401,7 +409,7 @@ static void test_states(void) {
    crushed vertex's deformation (body axes); -1 / zeros when refused */
 static double searched(const dm_world_desc* desc, int deformable_wall, double deformation[3]) {
   car_and_wall s;
-  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   if (deformable_wall) s.bodies[1].rigid = 0, s.bodies[1].stiffness_a = 1.0e5, s.bodies[1].stiffness_b = 1.0e6;
   memset(deformation, 0, 3 * sizeof(double));
   dm_world* w = NULL;
@@ -430,7 +438,7 @@ static double searched(const dm_world_desc* desc, int deformable_wall, double de
    closed form says; a specified direction pushes the crush along it; bad values refused */
 static void test_search_options(void) {
   double crush[3];
-  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+  dm_world_desc desc = wall_run_desc();
   const double reference = searched(&desc, 0, crush);
   /* the older struct, garbage beyond its end: the defaults, bit for bit */
   unsigned char older[sizeof(dm_world_desc)];
@@ -466,7 +474,7 @@ static void test_search_options(void) {
   /* refused naming the field */
   dm_world* w = NULL;
   car_and_wall s;
-  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   desc.specified_direction[1] = 0.0;
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "world.specified_direction: expected a vector of nonzero length"));
   desc.search_direction = DM_SEARCH_VELOCITY;
@@ -499,7 +507,7 @@ static void check_size_verdict(dm_status status, int accepted, const char* field
    sizeof, or one ending partway through a field, was taken and the bytes beyond it ignored or half read) */
 static void test_struct_sizes(void) {
   car_and_wall s;
-  make_car_and_wall(&s, (dm_body_state){{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}}, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   dm_world* w = NULL;
   /* the world: this header's size and the first ABI's (before search_direction) are taken */
   unsigned char buffer[sizeof(dm_world_desc) + 16];
@@ -516,7 +524,7 @@ static void test_struct_sizes(void) {
     w = NULL;
   }
   /* the bodies: this header's size and the first ABI's (before motion), elements that far apart */
-  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+  dm_world_desc desc = wall_run_desc();
   unsigned char packed[2 * (sizeof(dm_body_desc) + 16)];
   const size_t body_sizes[] = {offsetof(dm_body_desc, motion), sizeof(dm_body_desc),
                                /* refused: */ offsetof(dm_body_desc, motion) + 4, offsetof(dm_body_desc, initial),
@@ -545,10 +553,9 @@ static void test_struct_sizes(void) {
    summary then failing with the JSON library's type_error.316; a fixed body's NaN mass taken) */
 static void test_messages(void) {
   car_and_wall s;
-  const dm_body_state moving = {{0, 0, 0}, 0, 0, 0, {13.4, 0, 0}, {0, 0, 0}};
-  dm_world_desc desc = {.struct_size = sizeof(dm_world_desc), .time_step = 0.0005, .duration = 0.3, .stop_at_separation = 1, .passes_per_step = 2};
+  dm_world_desc desc = wall_run_desc();
   dm_world* w = NULL;
-  make_car_and_wall(&s, moving, 2.76, DM_MOTION_DEFAULT);
+  make_car_at_wall(&s);
   s.bodies[0].initial.velocity[0] = NAN;
   CHECK(dm_world_create(&desc, s.bodies, 2, &w) == DM_ERROR_ARGUMENT && contains(dm_last_error(), "bodies[0].initial.velocity[0]: expected a finite number, got nan"));
   s.bodies[0].initial.velocity[0] = 13.4;

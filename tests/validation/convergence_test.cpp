@@ -143,13 +143,13 @@ void ExpectClose(const Outcome& base, const Outcome& v, const std::string& label
 // when run on (the stock car spinning at 120 deg/s, 3.3-3.5 klbf): with the p406 meshed 1:4 and the
 // conforming normal that meeting falls inside the demo's 0.8 s, after its collision ended at 0.47 s
 // (a 340 lbf touch 0.12 s after the pulse, within the slap horizon, ends it)
+bool Parted(const Outcome& o, double parted_by) {
+  const bool new_meeting = o.status == RunStatus::kEndedInContact && o.next_meeting > o.collision_end + kSlapHorizon;
+  return o.collision_end > 0.0 && o.collision_end < parted_by && (o.status == RunStatus::kComplete || new_meeting);
+}
+
 void ExpectParted(const Outcome& o, double parted_by, const std::string& label) {
-  EXPECT_GT(o.collision_end, 0.0) << label;
-  EXPECT_LT(o.collision_end, parted_by) << label;
-  if (o.status != RunStatus::kComplete) {
-    EXPECT_EQ(o.status, RunStatus::kEndedInContact) << label;
-    EXPECT_GT(o.next_meeting, o.collision_end + kSlapHorizon) << label;
-  }
+  EXPECT_TRUE(Parted(o, parted_by)) << label;
   std::printf("[measured] %s: the collision ends at %.4f s, next meeting %.4f s, status %s\n", label.c_str(),
               o.collision_end, o.next_meeting, RunStatusName(o.status));
 }
@@ -218,16 +218,17 @@ TEST(Convergence, Oblique45Degrees) { ExpectConverged("car_to_car_oblique.json")
 // lbf) 0.15-0.2 s after parting, within the slap horizon, which counts that touch as the collision's.
 // The demo's own start parted within the bar at each variant until the friction change, then touched
 // again at dt/2 and with 4 passes. Held on eight of those starts, at least six parting within 0.5 s
-// (as the offset's band is held), each balancing its energy within 2 %
+// (as the offset's band is held; measured 8 of 8 at the default, dt/2, 1:4, 3 and 4 passes, 6 with the
+// stop after one), each balancing its energy within 2 %
 void ExpectObliqueBandParts(const std::function<void(Scenario*)>& vary, const std::string& label) {
+  Scenario demo = Demo("car_to_car_oblique.json");
+  vary(&demo);
   int parted = 0;
   for (int j = 0; j < 8; ++j) {
-    Scenario s = Demo("car_to_car_oblique.json");
-    vary(&s);
+    Scenario s = demo;
     s.bodies[1].initial.position.y() += (-0.01 + 0.02 * j / 7.0) * units::kInch;
     const Outcome o = Run(s, false);
-    const bool new_meeting = o.status == RunStatus::kEndedInContact && o.next_meeting > o.collision_end + kSlapHorizon;
-    if (o.collision_end > 0.0 && o.collision_end < 0.5 && (o.status == RunStatus::kComplete || new_meeting)) ++parted;
+    if (Parted(o, 0.5)) ++parted;
     EXPECT_NEAR(o.balance, 0.0, 0.02) << label;
   }
   EXPECT_GE(parted, 6) << label;
